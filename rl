@@ -1,0 +1,129 @@
+#!/usr/bin/env bash
+# The TEXPLORE suite's one entry point. Run `./rl help` for the subcommands.
+#
+# Every subcommand that needs the build installs what is missing (apt, via sudo when not root),
+# then builds the catkin source space at the repository root out of source into .build/
+# (git-ignored), with Debian's ROS 1 and /usr/bin/python3.
+set -euo pipefail
+
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+BUILD_ROOT=${RL_BUILD_DIR:-$ROOT/.build}
+BUILD=$BUILD_ROOT/build
+DEVEL=$BUILD_ROOT/devel
+JOBS=${RL_JOBS:-$(nproc)}
+
+# System directories first: a pyenv `python3` shim lacks catkin_pkg and the ROS modules.
+export PATH=/usr/sbin:/usr/bin:/sbin:/bin:$PATH
+export ROS_HOSTNAME=${ROS_HOSTNAME:-localhost}
+export ROS_MASTER_URI=${ROS_MASTER_URI:-http://localhost:11311}
+
+# Debian bookworm packages the suite needs (shared/DESIGN.md §5).
+APT_PACKAGES=(
+  build-essential cmake clang-format
+  ros-core-dev catkin python3-catkin-pkg python3-rospy python3-roslaunch python3-rostest
+  librostest-dev python3-rostopic python3-rosmsg python3-rosnode python3-rosservice rosbash
+  ros-message-generation ros-message-runtime ros-std-msgs ros-std-srvs ros-sensor-msgs
+  colcon python3-colcon-ros python3-colcon-cmake python3-colcon-bash python3-colcon-test-result
+  libboost-program-options-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libeigen3-dev libnanoflann-dev liburdfdom-dev liburdf-dev libopencv-dev
+  python3-matplotlib python3-numpy
+)
+
+log() { printf '\033[1m[rl]\033[0m %s\n' "$*" >&2; }
+
+usage() {
+  cat <<USAGE
+Usage: ./rl <command> [args]
+
+  run [experiment options]  install, build, then run the default LightWorld experiment
+  test                      install, build, run every test (gtest, rostest, lint); prints
+                            'N passed, N failed' and exits non-zero on any failure
+  setup                     install the Debian packages the suite needs (apt)
+  build                     setup, then build into .build/ (RL_BUILD_DIR overrides)
+  exec <program> [args]     run a command inside the built workspace (devel/setup.bash)
+  help                      this text
+USAGE
+}
+
+cmd_setup() {
+  local missing=() pkg
+  for pkg in "${APT_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q 'install ok installed' ||
+      missing+=("$pkg")
+  done
+  if [ ${#missing[@]} -eq 0 ]; then
+    return 0
+  fi
+  local sudo=()
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { log "need root or sudo to install: ${missing[*]}"; exit 1; }
+    sudo=(sudo)
+  fi
+  log "installing ${#missing[@]} missing packages: ${missing[*]}"
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -q
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends \
+    "${missing[@]}"
+}
+
+cmd_build() {
+  cmd_setup
+  mkdir -p "$BUILD" "$DEVEL/lib/python3/dist-packages"
+  # Keep catkin's and colcon's package crawlers out of the build folder.
+  touch "$BUILD_ROOT/CATKIN_IGNORE" "$BUILD_ROOT/COLCON_IGNORE"
+  if [ ! -f "$BUILD/CMakeCache.txt" ]; then
+    log "configuring into $BUILD"
+    cmake -S "$ROOT" -B "$BUILD" -DCATKIN_DEVEL_PREFIX="$DEVEL" \
+      -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCATKIN_ENABLE_TESTING=ON >"$BUILD_ROOT/configure.log" 2>&1 ||
+      { cat "$BUILD_ROOT/configure.log"; exit 1; }
+  fi
+  log "building with $JOBS jobs"
+  cmake --build "$BUILD" -- -j"$JOBS"
+}
+
+source_workspace() {
+  set +u
+  # shellcheck disable=SC1091
+  source "$DEVEL/setup.bash"
+  set -u
+}
+
+cmd_test() {
+  cmd_build
+  source_workspace
+  log "building tests"
+  cmake --build "$BUILD" --target tests -- -j"$JOBS"
+  rm -rf "$BUILD/test_results"
+  log "running tests"
+  # run_tests exits 0 even when tests fail; the verdict comes from the result files.
+  cmake --build "$BUILD" --target run_tests -- -j1 >"$BUILD_ROOT/run_tests.log" 2>&1 || true
+  /usr/bin/python3 "$ROOT/tools/test_summary.py" "$BUILD/test_results" ||
+    { log "details: $BUILD_ROOT/run_tests.log"; return 1; }
+}
+
+cmd_exec() {
+  source_workspace
+  exec "$@"
+}
+
+cmd_run() {
+  cmd_build
+  source_workspace
+  exec "$ROOT/tools/run_default_experiment.sh" "$@"
+}
+
+main() {
+  local cmd=${1:-help}
+  shift || true
+  case "$cmd" in
+    setup) cmd_setup ;;
+    build) cmd_build ;;
+    test) cmd_test ;;
+    run) cmd_run "$@" ;;
+    exec) cmd_exec "$@" ;;
+    help | -h | --help) usage ;;
+    *) usage >&2; log "unknown command '$cmd'; valid: run, test, setup, build, exec, help"; exit 2 ;;
+  esac
+}
+
+main "$@"

@@ -1,0 +1,121 @@
+/**
+ * Registry: a table from names to factories, one per component kind (environments, agents,
+ * models, planners, explorers), filled explicitly in one place per kind.
+ *
+ * Names are the original package's option values; aliases map other accepted spellings
+ * (e.g. "parallel-uct" and "realtimeuct") to one canonical name. Asking for an unknown name is
+ * an error whose message lists every valid name, so a command line can print it as is.
+ */
+#pragma once
+
+#include <algorithm>
+#include <functional>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rl_common {
+
+/// Joins names as "a, b, c" for error messages and help texts.
+inline std::string joinNames(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) {
+    out += (out.empty() ? "" : ", ") + n;
+  }
+  return out;
+}
+
+template <class Product, class... Args>
+class Registry {
+ public:
+  using Factory = std::function<std::unique_ptr<Product>(Args...)>;
+
+  /// `kind` names the component kind in messages, e.g. "environment".
+  explicit Registry(std::string kind) : kind_(std::move(kind)) {}
+
+  /// Adds a factory under a canonical name. Throws if the name is taken.
+  Registry& add(const std::string& name, Factory factory, std::string description = {}) {
+    if (factory == nullptr) {
+      throw std::invalid_argument("Registry::add(): null factory for " + kind_ + " '" + name +
+                                  "'");
+    }
+    if (contains(name)) {
+      throw std::invalid_argument("Registry::add(): " + kind_ + " '" + name +
+                                  "' is already registered");
+    }
+    entries_.emplace(name, Entry{std::move(factory), std::move(description)});
+    return *this;
+  }
+
+  /// Makes `alias` another spelling of the registered `name`.
+  Registry& addAlias(const std::string& alias, const std::string& name) {
+    if (entries_.count(name) == 0) {
+      throw std::invalid_argument("Registry::addAlias(): unknown " + kind_ + " '" + name + "'");
+    }
+    if (contains(alias)) {
+      throw std::invalid_argument("Registry::addAlias(): " + kind_ + " '" + alias +
+                                  "' is already registered");
+    }
+    aliases_.emplace(alias, name);
+    return *this;
+  }
+
+  /// True if `name` is a canonical name or an alias.
+  bool contains(const std::string& name) const {
+    return entries_.count(name) > 0 || aliases_.count(name) > 0;
+  }
+
+  /// The canonical name of `name` (itself or the name it aliases). Throws if unknown.
+  std::string canonical(const std::string& name) const {
+    if (entries_.count(name) > 0) return name;
+    const auto alias = aliases_.find(name);
+    if (alias != aliases_.end()) return alias->second;
+    throw std::invalid_argument(unknownMessage(name));
+  }
+
+  /// Builds the product registered under `name`. Throws std::invalid_argument listing the
+  /// valid names if `name` is unknown.
+  std::unique_ptr<Product> create(const std::string& name, Args... args) const {
+    return entries_.at(canonical(name)).factory(std::forward<Args>(args)...);
+  }
+
+  /// Canonical names, sorted.
+  std::vector<std::string> names() const {
+    std::vector<std::string> out;
+    for (const auto& e : entries_) out.push_back(e.first);
+    return out;
+  }
+
+  /// Canonical names and aliases, sorted: every spelling `create` accepts.
+  std::vector<std::string> allNames() const {
+    std::vector<std::string> out = names();
+    for (const auto& a : aliases_) out.push_back(a.first);
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  const std::string& description(const std::string& name) const {
+    return entries_.at(canonical(name)).description;
+  }
+
+  const std::string& kind() const { return kind_; }
+
+ private:
+  struct Entry {
+    Factory factory;
+    std::string description;
+  };
+
+  std::string unknownMessage(const std::string& name) const {
+    return "unknown " + kind_ + " '" + name + "'; valid " + kind_ + "s: " + joinNames(allNames());
+  }
+
+  std::string kind_;
+  std::map<std::string, Entry> entries_;
+  std::map<std::string, std::string> aliases_;
+};
+
+}  // namespace rl_common

@@ -1,0 +1,76 @@
+/**
+ * ROS adapter for OptionParser: the same options as the command line, read from `~private`
+ * parameters of a node. Header-only, so that rl_common's library stays free of ROS; include it
+ * only from nodes and `_ros` targets.
+ *
+ * A parameter's name is the option's name with '-' turned into '_' (ROS names allow no dashes),
+ * e.g. `--explore-steps` is `~explore_steps`. Values may be bool, int, double or string. Flags
+ * take a bool: `~deterministic: true` acts as `--deterministic`, `~deterministic: false` as its
+ * opposite. The command line is applied after the parameters, so it wins.
+ */
+#pragma once
+
+#include <ros/node_handle.h>
+
+#include <sstream>
+#include <string>
+
+#include "rl_common/option_parser.h"
+
+namespace rl_common {
+
+/// The ROS parameter name of an option.
+inline std::string paramNameOf(std::string option) {
+  for (char& c : option) {
+    if (c == '-') c = '_';
+  }
+  return option;
+}
+
+/// Applies every `~name` parameter that matches an option (any spelling). Throws OptionError
+/// naming the parameter if its type or value is invalid.
+inline void loadPrivateParams(OptionParser& parser, const ros::NodeHandle& pnh) {
+  for (const OptionParser::Spec& spec : parser.specs()) {
+    std::vector<std::string> spellings = spec.aliases;
+    spellings.insert(spellings.begin(), spec.name);
+    for (const std::string& spelling : spellings) {
+      const std::string param = paramNameOf(spelling);
+      XmlRpc::XmlRpcValue v;
+      if (!pnh.getParam(param, v)) continue;
+      std::ostringstream text;
+      switch (v.getType()) {
+        case XmlRpc::XmlRpcValue::TypeBoolean:
+          text << (static_cast<bool>(v) ? "true" : "false");
+          break;
+        case XmlRpc::XmlRpcValue::TypeInt:
+          text << static_cast<int>(v);
+          break;
+        case XmlRpc::XmlRpcValue::TypeDouble:
+          text.precision(17);
+          text << static_cast<double>(v);
+          break;
+        case XmlRpc::XmlRpcValue::TypeString:
+          text << static_cast<std::string>(v);
+          break;
+        default:
+          throw OptionError("parameter " + pnh.resolveName(param) +
+                            ": expected a bool, number or string");
+      }
+      try {
+        parser.set(spelling, text.str());
+      } catch (const OptionError& e) {
+        throw OptionError("parameter " + pnh.resolveName(param) + ": " + e.what());
+      }
+    }
+  }
+}
+
+/// Reads `~private` parameters, then the command line (ros::init must have removed the
+/// remapping arguments). Returns false if --help was given.
+inline bool parseNodeOptions(OptionParser& parser, int argc, const char* const* argv,
+                             const ros::NodeHandle& pnh) {
+  loadPrivateParams(parser, pnh);
+  return parser.parse(argc, argv);
+}
+
+}  // namespace rl_common

@@ -1,0 +1,73 @@
+#include "rl_common/registry.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+
+namespace {
+
+struct Shape {
+  virtual ~Shape() = default;
+  virtual double area() const = 0;
+};
+struct Square : Shape {
+  explicit Square(double s) : side(s) {}
+  double area() const override { return side * side; }
+  double side;
+};
+struct Circle : Shape {
+  explicit Circle(double r) : radius(r) {}
+  double area() const override { return 3.0 * radius * radius; }
+  double radius;
+};
+
+using ShapeRegistry = rl_common::Registry<Shape, double>;
+
+ShapeRegistry makeRegistry() {
+  ShapeRegistry reg("shape");
+  reg.add("square", [](double s) { return std::make_unique<Square>(s); }, "four equal sides");
+  reg.add("circle", [](double r) { return std::make_unique<Circle>(r); });
+  reg.addAlias("round", "circle");
+  return reg;
+}
+
+}  // namespace
+
+TEST(Registry, CreatesByNameAndAlias) {
+  const auto reg = makeRegistry();
+  EXPECT_DOUBLE_EQ(reg.create("square", 2.0)->area(), 4.0);
+  EXPECT_DOUBLE_EQ(reg.create("circle", 1.0)->area(), 3.0);
+  EXPECT_DOUBLE_EQ(reg.create("round", 2.0)->area(), 12.0);
+  EXPECT_EQ(reg.canonical("round"), "circle");
+  EXPECT_EQ(reg.description("square"), "four equal sides");
+}
+
+TEST(Registry, UnknownNameListsValidNames) {
+  const auto reg = makeRegistry();
+  try {
+    reg.create("triangle", 1.0);
+    FAIL() << "expected an exception";
+  } catch (const std::invalid_argument& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("unknown shape 'triangle'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("circle, round, square"), std::string::npos) << msg;
+  }
+}
+
+TEST(Registry, NamesAreSortedAndAliasesSeparate) {
+  const auto reg = makeRegistry();
+  EXPECT_EQ(reg.names(), (std::vector<std::string>{"circle", "square"}));
+  EXPECT_EQ(reg.allNames(), (std::vector<std::string>{"circle", "round", "square"}));
+  EXPECT_TRUE(reg.contains("round"));
+  EXPECT_FALSE(reg.contains("triangle"));
+}
+
+TEST(Registry, DuplicatesAndBadAliasesAreRejected) {
+  auto reg = makeRegistry();
+  EXPECT_THROW(reg.add("square", [](double s) { return std::make_unique<Square>(s); }),
+               std::invalid_argument);
+  EXPECT_THROW(reg.addAlias("box", "cube"), std::invalid_argument);
+  EXPECT_THROW(reg.addAlias("round", "square"), std::invalid_argument);
+  EXPECT_THROW(reg.add("null", nullptr), std::invalid_argument);
+}
