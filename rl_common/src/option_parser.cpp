@@ -164,8 +164,7 @@ OptionParser& OptionParser::addSpec(Spec spec) {
 }
 
 OptionParser& OptionParser::choice(const std::string& names, std::string* target,
-                                   const std::vector<std::string>& valid,
-                                   const std::string& help) {
+                                   const std::vector<std::string>& valid, const std::string& help) {
   std::vector<std::pair<std::string, std::string>> spellings;
   for (const auto& v : valid) spellings.emplace_back(v, v);
   return aliasedChoice(names, target, spellings, help);
@@ -236,8 +235,7 @@ std::string OptionParser::validNames() const {
 void OptionParser::set(const std::string& name, const std::string& value) {
   const Spec* spec = find(name);
   if (spec == nullptr) {
-    throw OptionError(program_ + ": unknown option '" + name + "'; valid options: " +
-                      validNames());
+    throw OptionError(program_ + ": unknown option '" + name + "'; valid options: " + validNames());
   }
   spec->apply(value);
   if (!given(spec->name)) given_.push_back(spec->name);
@@ -271,8 +269,8 @@ bool OptionParser::parse(const std::vector<std::string>& args) {
   po::parsed_options parsed(&desc);
   try {
     // getopt_long_only semantics: long names with one or two dashes, unambiguous prefixes.
-    const int style = po::command_line_style::default_style |
-                      po::command_line_style::allow_long_disguise;
+    const int style =
+        po::command_line_style::default_style | po::command_line_style::allow_long_disguise;
     parsed = po::command_line_parser(args).options(desc).style(style).run();
   } catch (const po::unknown_option& e) {
     throw OptionError(program_ + ": unknown option '" + e.get_option_name() +

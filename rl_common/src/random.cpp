@@ -27,12 +27,11 @@ double Random::uniform() {
 
 int Random::uniformInt(int lo, int hi) {
   if (lo > hi) {
-    throw std::invalid_argument("Random::uniformInt(): empty range [" + std::to_string(lo) +
-                                ", " + std::to_string(hi) + "]");
+    throw std::invalid_argument("Random::uniformInt(): empty range [" + std::to_string(lo) + ", " +
+                                std::to_string(hi) + "]");
   }
   const std::uint64_t span =
-      static_cast<std::uint64_t>(static_cast<std::int64_t>(hi) - static_cast<std::int64_t>(lo)) +
-      1;
+      static_cast<std::uint64_t>(static_cast<std::int64_t>(hi) - static_cast<std::int64_t>(lo)) + 1;
   // Rejection sampling: draws above the largest multiple of span would bias low values.
   const std::uint64_t limit = UINT64_MAX - (UINT64_MAX % span);
   std::uint64_t x;
@@ -59,8 +58,7 @@ double Random::normal(double mean, double stddev) {
   return mean + stddev * u * m;
 }
 
-std::uint64_t Random::deriveSeed(std::uint64_t base, std::string_view stream,
-                                 std::uint64_t index) {
+std::uint64_t Random::deriveSeed(std::uint64_t base, std::string_view stream, std::uint64_t index) {
   // FNV-1a of the stream name, then mixed with the base seed and the index.
   std::uint64_t h = 0xCBF29CE484222325ULL;
   for (unsigned char c : stream) {

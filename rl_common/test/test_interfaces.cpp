@@ -80,7 +80,6 @@ TEST(Interfaces, EpisodeProtocolOrder) {
     r = env.apply(a);
   }
   agent.lastAction(r);
-  EXPECT_EQ(agent.calls,
-            (std::vector<std::string>{"first 0", "next 0 1", "next 0 2", "last 1"}));
+  EXPECT_EQ(agent.calls, (std::vector<std::string>{"first 0", "next 0 1", "next 0 2", "last 1"}));
   EXPECT_THROW(env.apply(2), std::out_of_range);
 }

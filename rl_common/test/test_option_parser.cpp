@@ -27,9 +27,10 @@ OptionParser makeParser(Config* c) {
   p.value("seed", &c->seed, "random seed");
   p.flag("stochastic", &c->stochastic, true, "noisy dynamics");
   p.flag("deterministic", &c->stochastic, false, "noise-free dynamics");
-  p.aliasedChoice("planner", &c->planner,
-           {{"uct", "uct"}, {"parallel-uct", "parallel-uct"}, {"realtimeuct", "parallel-uct"}},
-           "planner");
+  p.aliasedChoice(
+      "planner", &c->planner,
+      {{"uct", "uct"}, {"parallel-uct", "parallel-uct"}, {"realtimeuct", "parallel-uct"}},
+      "planner");
   p.choice("env", &c->env, {"taxi", "lightworld"}, "environment");
   return p;
 }

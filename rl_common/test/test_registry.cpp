@@ -26,7 +26,8 @@ using ShapeRegistry = rl_common::Registry<Shape, double>;
 
 ShapeRegistry makeRegistry() {
   ShapeRegistry reg("shape");
-  reg.add("square", [](double s) { return std::make_unique<Square>(s); }, "four equal sides");
+  reg.add(
+      "square", [](double s) { return std::make_unique<Square>(s); }, "four equal sides");
   reg.add("circle", [](double r) { return std::make_unique<Circle>(r); });
   reg.addAlias("round", "circle");
   return reg;

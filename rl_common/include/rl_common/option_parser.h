@@ -94,8 +94,8 @@ class OptionParser {
 
   /// Adds an option accepting several spellings per value: each pair is (spelling, value).
   OptionParser& aliasedChoice(const std::string& names, std::string* target,
-                       const std::vector<std::pair<std::string, std::string>>& spellings,
-                       const std::string& help);
+                              const std::vector<std::pair<std::string, std::string>>& spellings,
+                              const std::string& help);
 
   /// Adds a flag taking no value: giving it sets `*target = setTo` (as --deterministic sets
   /// stochastic to false). Through set(), "true" applies the flag and "false" its opposite.

@@ -39,8 +39,7 @@ class Registry {
   /// Adds a factory under a canonical name. Throws if the name is taken.
   Registry& add(const std::string& name, Factory factory, std::string description = {}) {
     if (factory == nullptr) {
-      throw std::invalid_argument("Registry::add(): null factory for " + kind_ + " '" + name +
-                                  "'");
+      throw std::invalid_argument("Registry::add(): null factory for " + kind_ + " '" + name + "'");
     }
     if (contains(name)) {
       throw std::invalid_argument("Registry::add(): " + kind_ + " '" + name +

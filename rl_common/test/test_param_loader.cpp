@@ -1,0 +1,79 @@
+// loadPrivateParams fills a config from ~private parameters with the command line's
+// validation, and the command line wins over parameters.
+#include "rl_common/ros/param_loader.h"
+
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+
+#include <string>
+
+namespace {
+
+struct Config {
+  double gamma = 0.99;
+  bool stochastic = true;
+  int exploreSteps = 1000;
+  int nmodels = 1;
+  unsigned long seed = 1;
+  std::string planner = "uct";
+};
+
+rl_common::OptionParser makeParser(Config* c) {
+  rl_common::OptionParser p("test", "");
+  p.value("gamma|discountfactor", &c->gamma, "", rl_common::inRange(0.0, 1.0));
+  p.flag("stochastic", &c->stochastic, true, "");
+  p.flag("deterministic", &c->stochastic, false, "");
+  p.value("explore-steps", &c->exploreSteps, "");
+  p.value("nmodels", &c->nmodels, "", rl_common::greaterThan(0));
+  p.value("seed", &c->seed, "");
+  p.aliasedChoice("planner", &c->planner, {{"uct", "uct"}, {"realtimeuct", "parallel-uct"}}, "");
+  return p;
+}
+
+}  // namespace
+
+TEST(ParamLoader, PrivateParametersFillTheConfig) {
+  Config c;
+  auto p = makeParser(&c);
+  rl_common::loadPrivateParams(p, ros::NodeHandle("~"));
+  EXPECT_DOUBLE_EQ(c.gamma, 0.5);
+  EXPECT_FALSE(c.stochastic);
+  EXPECT_EQ(c.exploreSteps, 25);  // ~explore_steps for --explore-steps
+  EXPECT_EQ(c.planner, "parallel-uct");
+  EXPECT_EQ(c.seed, 7u);
+  EXPECT_EQ(c.nmodels, 1);
+  EXPECT_TRUE(p.given("gamma"));
+  EXPECT_FALSE(p.given("nmodels"));
+}
+
+TEST(ParamLoader, CommandLineWins) {
+  Config c;
+  auto p = makeParser(&c);
+  const char* argv[] = {"test", "--gamma", "0.25", "--stochastic"};
+  ASSERT_TRUE(rl_common::parseNodeOptions(p, 4, argv, ros::NodeHandle("~")));
+  EXPECT_DOUBLE_EQ(c.gamma, 0.25);
+  EXPECT_TRUE(c.stochastic);
+  EXPECT_EQ(c.exploreSteps, 25);
+}
+
+TEST(ParamLoader, InvalidParametersNameTheParameter) {
+  Config c;
+  auto p = makeParser(&c);
+  try {
+    rl_common::loadPrivateParams(p, ros::NodeHandle("~bad"));
+    FAIL();
+  } catch (const rl_common::OptionError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("parameter /param_loader/bad/nmodels"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("must be > 0"), std::string::npos) << msg;
+  }
+  EXPECT_THROW(rl_common::loadPrivateParams(p, ros::NodeHandle("~bad_type")),
+               rl_common::OptionError);
+}
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "param_loader");
+  ros::NodeHandle nh;
+  return RUN_ALL_TESTS();
+}

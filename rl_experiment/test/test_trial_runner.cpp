@@ -1,0 +1,119 @@
+#include "rl_experiment/runner/trial_runner.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace {
+
+// Counts down from `start`; terminal at 0 if episodic. Reward 1 per step.
+class Countdown : public rl_common::Environment {
+ public:
+  Countdown(int start, bool episodic) : start_(start), episodic_(episodic) { reset(); }
+  const rl_common::State& sensation() const override { return s_; }
+  float apply(int) override {
+    s_[0] -= 1.0f;
+    return 1.0f;
+  }
+  bool terminal() const override { return episodic_ && s_[0] <= 0.0f; }
+  void reset() override {
+    s_ = {float(start_)};
+    ++resets;
+  }
+  int numActions() const override { return 1; }
+  void getMinMaxFeatures(std::vector<float>* mn, std::vector<float>* mx) const override {
+    *mn = {-1e6f};
+    *mx = {1e6f};
+  }
+  void getMinMaxReward(float* mn, float* mx) const override { *mn = *mx = 1.0f; }
+  bool isEpisodic() const override { return episodic_; }
+  std::vector<rl_common::Experience> seedExperiences() const override {
+    return {{{5.0f}, 0, 1.0f, {4.0f}, false}};
+  }
+  std::string name() const override { return "Countdown"; }
+  bool isStochastic() const override { return false; }
+  int resets = 0;
+
+ private:
+  int start_;
+  bool episodic_;
+  rl_common::State s_;
+};
+
+class Recorder : public rl_common::Agent {
+ public:
+  int firstAction(const rl_common::State&) override {
+    calls += "F";
+    return 0;
+  }
+  int nextAction(float, const rl_common::State&) override {
+    calls += "N";
+    return 0;
+  }
+  void lastAction(float) override { calls += "L"; }
+  void seedExperiences(const std::vector<rl_common::Experience>& s) override { seeds += s.size(); }
+  std::string calls;
+  std::size_t seeds = 0;
+};
+
+class Collect : public rl_experiment::TrialObserver {
+ public:
+  void onStep(const rl_experiment::StepRecord& r) override { steps.push_back(r); }
+  void onEpisode(const rl_experiment::EpisodeRecord& r) override { episodes.push_back(r); }
+  std::vector<rl_experiment::StepRecord> steps;
+  std::vector<rl_experiment::EpisodeRecord> episodes;
+};
+
+}  // namespace
+
+TEST(TrialRunner, NonEpisodicRunsExactlyStepsAsOneEpisode) {
+  Countdown env(3, false);
+  Recorder agent;
+  Collect log;
+  rl_experiment::TrialLimits limits;
+  limits.steps = 5;
+  const auto s = rl_experiment::TrialRunner(limits).run(env, agent, &log);
+  EXPECT_EQ(agent.calls, "FNNNN");
+  EXPECT_EQ(agent.seeds, 1u);
+  EXPECT_EQ(s.steps, 5);
+  EXPECT_EQ(s.episodes, 1);
+  EXPECT_DOUBLE_EQ(s.totalReward, 5.0);
+  ASSERT_EQ(log.steps.size(), 5u);
+  EXPECT_EQ(log.steps[4].step, 4);
+  ASSERT_EQ(log.episodes.size(), 1u);
+  EXPECT_FALSE(log.episodes[0].terminal);
+}
+
+TEST(TrialRunner, EpisodicEndsWithLastActionAndResets) {
+  Countdown env(3, true);
+  Recorder agent;
+  Collect log;
+  rl_experiment::TrialLimits limits;
+  limits.episodes = 2;
+  const auto s = rl_experiment::TrialRunner(limits).run(env, agent, &log);
+  EXPECT_EQ(agent.calls, "FNNLFNNL");
+  EXPECT_EQ(s.episodes, 2);
+  EXPECT_EQ(env.resets, 3);  // construction + one per episode
+  ASSERT_EQ(log.episodes.size(), 2u);
+  EXPECT_TRUE(log.episodes[1].terminal);
+  EXPECT_EQ(log.episodes[1].steps, 3);
+  EXPECT_FLOAT_EQ(log.episodes[1].reward, 3.0f);
+  EXPECT_TRUE(log.steps[2].terminal);
+  EXPECT_EQ(log.steps[3].episode, 1);
+}
+
+TEST(TrialRunner, EpisodeCutOffAtMaxSteps) {
+  Countdown env(100, true);
+  Recorder agent;
+  Collect log;
+  rl_experiment::TrialLimits limits;
+  limits.episodes = 1;
+  limits.maxSteps = 4;
+  rl_experiment::TrialRunner(limits).run(env, agent, &log);
+  EXPECT_EQ(agent.calls, "FNNNN");  // the last nextAction's action is discarded
+  ASSERT_EQ(log.episodes.size(), 1u);
+  EXPECT_EQ(log.episodes[0].steps, 4);
+  EXPECT_FALSE(log.episodes[0].terminal);
+  EXPECT_THROW(rl_experiment::TrialRunner({1, 1, 0}), std::invalid_argument);
+}
