@@ -1,0 +1,70 @@
+/**
+ * EnvironmentNode: serves an rl_common::Environment over the original rl_msgs protocol
+ * (shared/spec/ORIGINAL.md §2.2-2.3), so an original agent node or ours can drive it.
+ *
+ * Topics (relative, so `/rl_env/...` and `/rl_agent/...` without a namespace):
+ *   publishes  rl_env/rl_env_description (latched), rl_env/rl_seed, rl_env/rl_state_reward
+ *   subscribes rl_agent/rl_action, rl_agent/rl_experiment_info
+ *   service    rl_env/reset (rl_msgs/Reset, new): reseed if asked, reset, publish the start
+ *
+ * Beyond the original: the description is latched and re-sent to every new subscriber; the
+ * seed experiences are sent to every new subscriber of rl_seed (from a queue that holds them
+ * all); the first state is published only once an agent listens on rl_state_reward and
+ * rl_seed, and the state topic is latched so a late agent gets the current state. A bad action
+ * or message is logged and dropped; the node keeps serving.
+ */
+#pragma once
+
+#include <rl_msgs/RLAction.h>
+#include <rl_msgs/RLEnvDescription.h>
+#include <rl_msgs/RLEnvSeedExperience.h>
+#include <rl_msgs/RLExperimentInfo.h>
+#include <rl_msgs/RLStateReward.h>
+#include <rl_msgs/Reset.h>
+#include <ros/ros.h>
+
+#include <functional>
+#include <memory>
+
+#include "rl_common/environment.h"
+
+namespace rl_env {
+
+/// Converts to the original messages.
+rl_msgs::RLEnvDescription toMessage(const rl_common::EnvironmentDescription& d);
+rl_msgs::RLEnvSeedExperience toMessage(const rl_common::Experience& e);
+
+class EnvironmentNode {
+ public:
+  /// Builds a fresh environment from a seed (used at start and by the reset service).
+  using Factory = std::function<std::unique_ptr<rl_common::Environment>(std::uint64_t seed)>;
+
+  /// `nh` resolves the topics; `seed` is the seed of the first environment.
+  EnvironmentNode(ros::NodeHandle nh, Factory factory, std::uint64_t seed, bool prints);
+
+  /// Publishes the first state once an agent listens (call from a timer or the spin loop).
+  void publishFirstStateWhenReady();
+
+  void onAction(const rl_msgs::RLAction::ConstPtr& msg);
+  void onExperimentInfo(const rl_msgs::RLExperimentInfo::ConstPtr& msg);
+  bool onReset(rl_msgs::Reset::Request& req, rl_msgs::Reset::Response& res);
+
+  long steps() const { return steps_; }
+
+ private:
+  void publishState(float reward);
+  void sendSeeds(const ros::SingleSubscriberPublisher& pub);
+
+  ros::NodeHandle nh_;
+  Factory factory_;
+  std::unique_ptr<rl_common::Environment> env_;
+  bool prints_;
+  bool firstStateSent_ = false;
+  long steps_ = 0;
+  ros::Publisher descriptionPub_, seedPub_, statePub_;
+  ros::Subscriber actionSub_, infoSub_;
+  ros::ServiceServer resetSrv_;
+  ros::WallTimer readyTimer_;
+};
+
+}  // namespace rl_env

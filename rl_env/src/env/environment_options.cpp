@@ -1,0 +1,44 @@
+#include "rl_env/env/environment_options.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "rl_common/registry.h"
+
+namespace rl_env {
+
+void addEnvironmentOptions(rl_common::OptionParser& parser, EnvironmentOptions* o) {
+  parser.value("env", &o->env, "environment (see the list of valid names with an unknown one)");
+  parser.value("seed", &o->seed, "seed of the environment's random source");
+  parser.flag("stochastic", &o->stochastic, true, "noisy dynamics (the default)");
+  parser.flag("deterministic", &o->stochastic, false, "noise-free dynamics");
+  parser.value("delay", &o->delay, "delay in steps (mcar, tworooms)", rl_common::atLeast(0));
+  parser.value("nsectors", &o->nsectors, "number of sectors (stocks)", rl_common::greaterThan(0));
+  parser.value("nstocks", &o->nstocks, "stocks per sector (stocks)", rl_common::greaterThan(0));
+  parser.flag("lag", &o->lag, true, "second-order brake dynamics (car2to7, car7to2, carrandom)");
+  parser.flag("nolag", &o->lag, false, "no brake lag (car*, the default)");
+  parser.flag("highvar", &o->highvar, true, "high-variance fuel costs (fuelworld)");
+}
+
+void checkEnvironmentOptions(const rl_common::OptionParser& parser, const EnvironmentOptions& o) {
+  struct Rule {
+    const char* option;
+    std::vector<std::string> envs;
+  };
+  const std::vector<Rule> rules = {
+      {"delay", {"mcar", "tworooms"}},
+      {"nsectors", {"stocks"}},
+      {"nstocks", {"stocks"}},
+      {"lag", {"car2to7", "car7to2", "carrandom"}},
+      {"nolag", {"car2to7", "car7to2", "carrandom"}},
+      {"highvar", {"fuelworld"}},
+  };
+  for (const Rule& r : rules) {
+    if (parser.given(r.option) && std::find(r.envs.begin(), r.envs.end(), o.env) == r.envs.end()) {
+      throw rl_common::OptionError(std::string("option --") + r.option + " applies only to --env " +
+                                   rl_common::joinNames(r.envs) + ", not to '" + o.env + "'");
+    }
+  }
+}
+
+}  // namespace rl_env

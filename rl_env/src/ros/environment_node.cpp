@@ -1,0 +1,136 @@
+#include "rl_env/ros/environment_node.h"
+
+#include <cmath>
+#include <string>
+
+namespace rl_env {
+
+rl_msgs::RLEnvDescription toMessage(const rl_common::EnvironmentDescription& d) {
+  rl_msgs::RLEnvDescription m;
+  m.num_actions = static_cast<float>(d.numActions);
+  m.num_states = static_cast<float>(d.numFeatures());
+  m.min_state_range = d.minFeatures;
+  m.max_state_range = d.maxFeatures;
+  m.max_reward = d.maxReward;
+  m.reward_range = d.rewardRange();
+  m.stochastic = d.stochastic;
+  m.episodic = d.episodic;
+  m.title = d.title;
+  return m;
+}
+
+rl_msgs::RLEnvSeedExperience toMessage(const rl_common::Experience& e) {
+  rl_msgs::RLEnvSeedExperience m;
+  m.from_state = e.s;
+  m.action = e.action;
+  m.to_state = e.next;
+  m.reward = e.reward;
+  m.terminal = e.terminal;
+  return m;
+}
+
+EnvironmentNode::EnvironmentNode(ros::NodeHandle nh, Factory factory, std::uint64_t seed,
+                                 bool prints)
+    : nh_(nh), factory_(std::move(factory)), env_(factory_(seed)), prints_(prints) {
+  const auto description = toMessage(env_->describe());
+  const std::size_t nseeds = env_->seedExperiences().size();
+  descriptionPub_ = nh_.advertise<rl_msgs::RLEnvDescription>("rl_env/rl_env_description", 1,
+                                                             /*latch=*/true);
+  // Every new subscriber gets all seeds, from a queue large enough to hold them.
+  seedPub_ = nh_.advertise<rl_msgs::RLEnvSeedExperience>(
+      "rl_env/rl_seed", static_cast<uint32_t>(std::max<std::size_t>(20, nseeds + 1)),
+      [this](const ros::SingleSubscriberPublisher& pub) { sendSeeds(pub); },
+      ros::SubscriberStatusCallback(), ros::VoidConstPtr(), /*latch=*/false);
+  statePub_ = nh_.advertise<rl_msgs::RLStateReward>("rl_env/rl_state_reward", 1, /*latch=*/true);
+  const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
+  actionSub_ = nh_.subscribe("rl_agent/rl_action", 1, &EnvironmentNode::onAction, this, hints);
+  infoSub_ = nh_.subscribe("rl_agent/rl_experiment_info", 1, &EnvironmentNode::onExperimentInfo,
+                           this, hints);
+  resetSrv_ = nh_.advertiseService("rl_env/reset", &EnvironmentNode::onReset, this);
+  descriptionPub_.publish(description);
+  ROS_INFO_STREAM_NAMED(
+      "env", "serving " << description.title.substr(0, description.title.size() - 1) << ": "
+                        << description.num_states << " features, " << description.num_actions
+                        << " actions, " << nseeds << " seed experiences; waiting for an agent");
+  readyTimer_ = nh_.createWallTimer(ros::WallDuration(0.05), [this](const ros::WallTimerEvent&) {
+    publishFirstStateWhenReady();
+  });
+}
+
+void EnvironmentNode::sendSeeds(const ros::SingleSubscriberPublisher& pub) {
+  const auto seeds = env_->seedExperiences();
+  for (const auto& e : seeds) pub.publish(toMessage(e));
+  ROS_INFO_STREAM_NAMED(
+      "env", "sent " << seeds.size() << " seed experiences to " << pub.getSubscriberName());
+}
+
+void EnvironmentNode::publishFirstStateWhenReady() {
+  if (firstStateSent_) return;
+  // An agent listens on all three topics before it can act; the seeds go out on connection.
+  if (statePub_.getNumSubscribers() == 0 || seedPub_.getNumSubscribers() == 0 ||
+      descriptionPub_.getNumSubscribers() == 0) {
+    return;
+  }
+  firstStateSent_ = true;
+  readyTimer_.stop();
+  // Let the seeds sent on connection reach the agent before the first state.
+  ros::WallDuration(0.2).sleep();
+  ROS_INFO_NAMED("env", "agent connected; publishing the first state");
+  publishState(0.0f);
+}
+
+void EnvironmentNode::publishState(float reward) {
+  rl_msgs::RLStateReward m;
+  m.state = env_->sensation();
+  m.reward = reward;
+  m.terminal = env_->terminal();
+  statePub_.publish(m);
+}
+
+void EnvironmentNode::onAction(const rl_msgs::RLAction::ConstPtr& msg) {
+  const int a = msg->action;
+  if (a < 0 || a >= env_->numActions()) {
+    ROS_WARN_STREAM_NAMED(
+        "env", "dropping action " << a << ": valid actions are 0.." << env_->numActions() - 1);
+    return;
+  }
+  const float r = env_->apply(a);
+  ++steps_;
+  if (prints_) {
+    const auto& s = env_->sensation();
+    ROS_INFO_STREAM_NAMED("env", "action " << a << " state " << (s.empty() ? 0.0f : s[0]) << ","
+                                           << (s.size() > 1 ? s[1] : 0.0f) << " reward " << r);
+  }
+  publishState(r);
+}
+
+void EnvironmentNode::onExperimentInfo(const rl_msgs::RLExperimentInfo::ConstPtr& msg) {
+  // The original treats any episode report as "reset".
+  ROS_INFO_STREAM_NAMED("env", "episode " << msg->episode_number << " ended with reward "
+                                          << msg->episode_reward << " after " << msg->number_actions
+                                          << " actions; resetting");
+  env_->reset();
+  publishState(0.0f);
+}
+
+bool EnvironmentNode::onReset(rl_msgs::Reset::Request& req, rl_msgs::Reset::Response& res) {
+  try {
+    if (req.use_seed) {
+      env_ = factory_(req.seed);
+    } else {
+      env_->reset();
+    }
+  } catch (const std::exception& e) {
+    res.success = false;
+    res.message = e.what();
+    return true;
+  }
+  steps_ = 0;
+  res.success = true;
+  res.message = req.use_seed ? "reset with seed " + std::to_string(req.seed) : "reset";
+  ROS_INFO_STREAM_NAMED("env", res.message);
+  publishState(0.0f);
+  return true;
+}
+
+}  // namespace rl_env

@@ -1,0 +1,114 @@
+// The environment options: declaration with the original's names, defaults, validation, and
+// the per-environment applicability check.
+#include "rl_env/env/environment_options.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace {
+
+using rl_common::OptionError;
+using rl_common::OptionParser;
+using rl_env::EnvironmentOptions;
+
+// Parses `args` into a fresh options struct; returns it.
+EnvironmentOptions parse(const std::vector<std::string>& args, OptionParser* parser,
+                         EnvironmentOptions* o) {
+  rl_env::addEnvironmentOptions(*parser, o);
+  parser->parse(args);
+  return *o;
+}
+
+TEST(EnvironmentOptions, DefaultsAreTheOriginals) {
+  const EnvironmentOptions o;
+  EXPECT_EQ(o.env, "lightworld");
+  EXPECT_TRUE(o.stochastic);
+  EXPECT_EQ(o.delay, 0);
+  EXPECT_EQ(o.nsectors, 3);
+  EXPECT_EQ(o.nstocks, 3);
+  EXPECT_FALSE(o.lag);
+  EXPECT_FALSE(o.highvar);
+}
+
+TEST(EnvironmentOptions, ParsesEveryOption) {
+  OptionParser parser("env", "--env <type>");
+  EnvironmentOptions o;
+  parse({"--env", "stocks", "--seed", "7", "--deterministic", "--nsectors", "4", "--nstocks", "2"},
+        &parser, &o);
+  EXPECT_EQ(o.env, "stocks");
+  EXPECT_EQ(o.seed, 7u);
+  EXPECT_FALSE(o.stochastic);
+  EXPECT_EQ(o.nsectors, 4);
+  EXPECT_EQ(o.nstocks, 2);
+  EXPECT_NO_THROW(rl_env::checkEnvironmentOptions(parser, o));
+
+  OptionParser p2("env", "--env <type>");
+  EnvironmentOptions o2;
+  parse({"-env", "car2to7", "-lag"}, &p2, &o2);  // single-dash long names, as the original
+  EXPECT_TRUE(o2.lag);
+  EXPECT_NO_THROW(rl_env::checkEnvironmentOptions(p2, o2));
+}
+
+TEST(EnvironmentOptions, DelayWithTaxiIsRejectedNamingTheOption) {
+  OptionParser parser("env", "--env <type>");
+  EnvironmentOptions o;
+  parse({"--env", "taxi", "--delay", "2"}, &parser, &o);
+  try {
+    rl_env::checkEnvironmentOptions(parser, o);
+    FAIL() << "--delay accepted for taxi";
+  } catch (const OptionError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("--delay"), std::string::npos) << what;
+    EXPECT_NE(what.find("mcar"), std::string::npos) << what;
+    EXPECT_NE(what.find("taxi"), std::string::npos) << what;
+  }
+}
+
+TEST(EnvironmentOptions, EachOptionOnlyForItsEnvironments) {
+  struct Case {
+    std::vector<std::string> args;
+    bool ok;
+  };
+  const std::vector<Case> cases = {
+      {{"--env", "mcar", "--delay", "3"}, true},
+      {{"--env", "tworooms", "--delay", "1"}, true},
+      {{"--env", "lightworld", "--delay", "1"}, false},
+      {{"--env", "stocks", "--nstocks", "5"}, true},
+      {{"--env", "taxi", "--nsectors", "5"}, false},
+      {{"--env", "carrandom", "--nolag"}, true},
+      {{"--env", "lightworld", "--lag"}, false},
+      {{"--env", "fuelworld", "--highvar"}, true},
+      {{"--env", "energy", "--highvar"}, false},
+      {{"--env", "taxi", "--deterministic", "--seed", "3"}, true},
+  };
+  for (const Case& c : cases) {
+    OptionParser parser("env", "--env <type>");
+    EnvironmentOptions o;
+    parse(c.args, &parser, &o);
+    if (c.ok) {
+      EXPECT_NO_THROW(rl_env::checkEnvironmentOptions(parser, o)) << c.args[1] << " " << c.args[2];
+    } else {
+      EXPECT_THROW(rl_env::checkEnvironmentOptions(parser, o), OptionError)
+          << c.args[1] << " " << c.args[2];
+    }
+  }
+}
+
+TEST(EnvironmentOptions, BadValuesAreRejectedNamingTheOption) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"--delay", "-1"}, {"--nsectors", "0"}, {"--nstocks", "x"}}) {
+    OptionParser parser("env", "--env <type>");
+    EnvironmentOptions o;
+    rl_env::addEnvironmentOptions(parser, &o);
+    try {
+      parser.parse(args);
+      ADD_FAILURE() << "accepted " << args[0] << " " << args[1];
+    } catch (const OptionError& e) {
+      EXPECT_NE(std::string(e.what()).find(args[0]), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace
