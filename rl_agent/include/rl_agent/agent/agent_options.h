@@ -1,0 +1,58 @@
+/**
+ * Options of every agent: the original agent node's options and defaults (§3.1 of
+ * shared/spec/ORIGINAL.md), one default each, and their command-line declaration.
+ */
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "rl_common/option_parser.h"
+
+namespace rl_agent {
+
+struct AgentOptions {
+  std::string agent = "texplore";  ///< registry name (--agent)
+  std::uint64_t seed = 1;          ///< seed of the agent's own random source
+  float gamma = 0.99f;             ///< discount factor (--gamma, --discountfactor)
+  float epsilon = 0.1f;            ///< exploration rate of epsilon-greedy action selection
+  float alpha = 0.3f;              ///< learning rate (qlearner, sarsa, dyna)
+  float initialvalue = 0.0f;       ///< initial Q-value (qlearner, sarsa, dyna)
+  float actrate = 10.0f;           ///< actions per second of the real-time agent (Hz)
+  float lambda = 0.1f;             ///< UCT(lambda) mixing, or Sarsa(lambda) trace decay
+  int m = 5;                       ///< R-MAX visits before a state-action is known
+  std::string model = "tree";      ///< model type
+  std::string explore = "greedy";  ///< exploration type
+  std::string combo = "best";      ///< forest combination
+  std::string planner = "parallel-uct";
+  int nmodels = 1;       ///< trees per forest
+  bool reltrans = true;  ///< predict relative changes (--reltrans / --abstrans)
+  float v = 0.0f;        ///< VANIR variance coefficient (--v, --b)
+  float n = 0.0f;        ///< VANIR novelty coefficient (--n)
+  int history = 0;       ///< action-history length
+  int nstates = 0;       ///< bins per feature (0: no discretisation)
+  int k = 1000;          ///< Dyna model updates per step
+  std::string filename;  ///< policy file (savedpolicy reads it; others write it at shutdown)
+  long rollouts = 0;     ///< UCT rollouts per step, synchronously (0: real time at actrate)
+};
+
+/// Declares every agent option but --seed on `parser`, writing into `options`. Programs declare
+/// --seed themselves: the agent node uses it as is, the experiment runner derives the agent's
+/// and the environment's seeds from one run seed.
+void addAgentOptions(rl_common::OptionParser& parser, AgentOptions* options);
+
+/// Gives options the user did not set the defaults of the chosen agent (the original's
+/// overrides, ORIGINAL.md §3.1): rmax plans with value iteration on a tabular model and
+/// explores unknown state-actions; texplore uses 5-tree forests averaged, relative
+/// transitions, the real-time UCT planner, and variance-novelty exploration when --v or --n is
+/// given (greedy otherwise).
+void applyAgentDefaults(const rl_common::OptionParser& parser, AgentOptions* options);
+
+/// The original's option rules without its bugs: options apply only to the agents that use
+/// them (e.g. --alpha for qlearner, sarsa, dyna; --v for the model-based agents); --epsilon is
+/// accepted by every agent that acts epsilon-greedily; --combo other than best needs more than
+/// one tree; rmax needs a tabular model. Throws rl_common::OptionError naming the option and
+/// where it applies.
+void checkAgentOptions(const rl_common::OptionParser& parser, const AgentOptions& options);
+
+}  // namespace rl_agent

@@ -1,0 +1,57 @@
+/**
+ * QLearner: tabular Q-learning with epsilon-greedy action selection.
+ *
+ * Watkins & Dayan, "Q-learning", Machine Learning 8:279-292, 1992. After each step,
+ *   Q(s,a) <- Q(s,a) + alpha * (r + gamma * max_a' Q(s',a') - Q(s,a)),
+ * with the bootstrap term dropped when s' is terminal. States are keyed by their exact feature
+ * vector; unseen state-actions start at `initialValue`. Greedy ties are broken at random
+ * among actions within 1e-4 of the best value, as in the original package.
+ */
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <vector>
+
+#include "rl_common/agent.h"
+#include "rl_common/random.h"
+
+namespace rl_agent {
+
+class QLearner : public rl_common::Agent {
+ public:
+  struct Config {
+    int numActions = 0;
+    float gamma = 0.99f;
+    float initialValue = 0.0f;
+    float alpha = 0.3f;
+    float epsilon = 0.1f;
+  };
+
+  /// Throws std::invalid_argument if numActions < 1 or a rate is outside [0, 1].
+  QLearner(const Config& config, std::uint64_t seed);
+
+  int firstAction(const rl_common::State& s) override;
+  int nextAction(float reward, const rl_common::State& s) override;
+  void lastAction(float reward) override;
+  /// Applies one Q-update per seed transition (terminal-aware).
+  void seedExperiences(const std::vector<rl_common::Experience>& seeds) override;
+
+  /// Q(s, a); `initialValue` for unseen pairs.
+  float q(const rl_common::State& s, int action) const;
+  /// The greedy action in `s` (random tie-break).
+  int greedyAction(const rl_common::State& s);
+
+ private:
+  std::vector<float>& row(const rl_common::State& s);
+  int chooseAction(const rl_common::State& s);
+  void update(const rl_common::State& s, int a, float r, const rl_common::State* next);
+
+  Config config_;
+  rl_common::Random rng_;
+  std::map<rl_common::State, std::vector<float>> q_;
+  rl_common::State lastState_;
+  int lastAction_ = -1;
+};
+
+}  // namespace rl_agent

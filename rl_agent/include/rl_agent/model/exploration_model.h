@@ -1,0 +1,62 @@
+/**
+ * ExplorationModel: a FactoredModel plus the record of visited state-actions,
+ * whose views add intrinsic rewards to every prediction (the original's
+ * ExplorationModel wrapper, shared/spec/ORIGINAL.md §5.1, §5.4): the planner
+ * sees R^(s,a) = E[reward forest] + sum_k bonus_k(s,a), e.g. TEXPLORE-VANIR's
+ * v*D(s,a) + n*delta(s,a), with each part kept in the prediction's reward
+ * breakdown. Intrinsic rewards can be switched off (the task phase of the
+ * paper's experiments) without losing what was learned.
+ */
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "rl_agent/model/factored_model.h"
+#include "rl_agent/model/novelty_index.h"
+#include "rl_agent/reward/intrinsic_reward.h"
+
+namespace rl_agent {
+
+class ExplorationModel : public rl_common::MDPModel {
+ public:
+  using Rewards = std::vector<std::shared_ptr<const IntrinsicReward>>;
+
+  /// Immutable view: the model's prediction plus the bonuses. Thread-safe.
+  class View : public rl_common::ModelView {
+   public:
+    rl_common::StateActionInfo query(const rl_common::State& input, int action) const override;
+    const FactoredModel::View& model() const { return *model_; }
+    const NoveltyIndex::Snapshot& visited() const { return visited_; }
+
+   private:
+    friend class ExplorationModel;
+    std::shared_ptr<const FactoredModel::View> model_;
+    NoveltyIndex::Snapshot visited_;
+    std::shared_ptr<const Rewards> rewards_;  ///< null when intrinsic rewards are off
+  };
+
+  ExplorationModel(const FactoredModel::Config& config, std::uint64_t seed, Rewards rewards);
+
+  /// Learns the model and records each (s, a) as visited (seeds and terminal
+  /// ones too).
+  bool update(const std::vector<rl_common::Experience>& experiences) override;
+  std::shared_ptr<const rl_common::ModelView> view() const override { return explorationView(); }
+  std::shared_ptr<const View> explorationView() const;
+
+  /// Turns the intrinsic rewards on or off for the views taken from now on.
+  void setIntrinsicEnabled(bool enabled) { enabled_ = enabled; }
+  bool intrinsicEnabled() const { return enabled_; }
+  const FactoredModel& model() const { return model_; }
+  const Rewards& rewards() const { return *rewards_; }
+
+ private:
+  FactoredModel model_;
+  NoveltyIndex visited_;
+  std::shared_ptr<const Rewards> rewards_;
+  std::atomic<bool> enabled_{true};  ///< set by the acting thread, read by the learner
+};
+
+}  // namespace rl_agent

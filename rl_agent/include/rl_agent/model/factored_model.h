@@ -1,0 +1,92 @@
+/**
+ * FactoredModel: TEXPLORE's learned model of the environment (Hester & Stone
+ * 2013; the TEXPLORE-VANIR paper §4.1, Algorithm 1; shared/spec/ORIGINAL.md
+ * §6.1).
+ *
+ * One random forest per state feature predicts that feature's change s'_j - s_j
+ * (or s'_j with absolute transitions); a reward forest predicts the reward and,
+ * in episodic tasks, a terminal forest predicts termination. Every forest's
+ * input is the state (plus any history features) followed by the action
+ * one-hot: x = [s, onehot(a)]. Feature forests learn only from non-terminal
+ * transitions; reward and terminal forests from all.
+ *
+ * A query combines the per-feature distributions as an independent product into
+ * a distribution over absolute next states: P(s' | s, a) = prod_j P_j(s'_j -
+ * s_j | x), pruning combinations below 1e-6 and renormalising; reward =
+ * E[reward forest]; termProb = E[clip(terminal forest, 0, 1)] (0 if
+ * non-episodic). Before any data the model predicts a self-transition with
+ * reward -0.001 and known = false, as the original.
+ *
+ * The model's variance (VANIR's D(s,a), ORIGINAL.md §5.2) is the forests'
+ * disagreement averaged over the outputs {features, reward, terminal}, where
+ * the terminal output counts 0 in non-episodic tasks: D = (sum_j D_j + D_reward
+ * + D_terminal) / (d + 2).
+ *
+ * view() is cheap: it copies the forests' snapshots (shared, immutable trees).
+ */
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "rl_agent/model/random_forest.h"
+#include "rl_common/mdp_model.h"
+
+namespace rl_agent {
+
+class FactoredModel : public rl_common::MDPModel {
+ public:
+  struct Config {
+    int numActions = 0;
+    std::vector<float> featMin;  ///< declared feature ranges (define d)
+    std::vector<float> featMax;
+    int extraInputs = 0;              ///< history features appended to states (not predicted)
+    bool relativeTransitions = true;  ///< predict s'-s (--reltrans) or s' (--abstrans)
+    bool episodic = true;             ///< learn a terminal forest
+    RandomForest::Config forest;      ///< every forest's settings (m, w, f, combination)
+  };
+
+  /// Immutable view: thread-safe queries.
+  class View : public rl_common::ModelView {
+   public:
+    /// The prediction with the external reward only (no intrinsic bonuses).
+    rl_common::StateActionInfo query(const rl_common::State& input, int action) const override;
+    /// D(s, a) above, in [0, ~1].
+    double variance(const rl_common::State& input, int action) const;
+    /// The distribution of feature j's prediction (relative change or absolute
+    /// value).
+    Distribution featureDistribution(const rl_common::State& input, int action,
+                                     std::size_t feature) const;
+    /// Number of experiences learned when the view was taken.
+    std::size_t numExperiences() const { return experiences_; }
+
+   private:
+    friend class FactoredModel;
+    std::vector<float> treeInput(const rl_common::State& input, int action) const;
+    std::shared_ptr<const Config> config_;
+    std::vector<RandomForest::Snapshot> features_;
+    RandomForest::Snapshot reward_;
+    RandomForest::Snapshot terminal_;
+    std::size_t experiences_ = 0;
+  };
+
+  /// Throws std::invalid_argument on an inconsistent configuration.
+  FactoredModel(const Config& config, std::uint64_t seed);
+
+  bool update(const std::vector<rl_common::Experience>& experiences) override;
+  std::shared_ptr<const rl_common::ModelView> view() const override { return factoredView(); }
+  std::shared_ptr<const View> factoredView() const;
+
+  const Config& config() const { return *config_; }
+  std::size_t numExperiences() const { return experiences_; }
+
+ private:
+  std::shared_ptr<const Config> config_;
+  std::vector<RandomForest> features_;
+  RandomForest reward_;
+  RandomForest terminal_;
+  std::size_t experiences_ = 0;
+};
+
+}  // namespace rl_agent

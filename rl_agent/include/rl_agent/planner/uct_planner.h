@@ -1,0 +1,208 @@
+/**
+ * UctPlanner: TEXPLORE's UCT(λ) planner (the original's ETUCT), rollouts on a learned model.
+ *
+ * UCT (Kocsis & Szepesvári, "Bandit based Monte-Carlo planning", ECML 2006) as modified by
+ * TEXPLORE (Hester & Stone, "TEXPLORE: real-time sample-efficient reinforcement learning for
+ * robots", Machine Learning 90(3), 2013, Alg. 3). Each rollout starts at the root state and
+ * samples its way through the model (a ModelView) for at most `maxDepth` actions (the
+ * original's `depth > MAX_DEPTH` test allowed one more):
+ *
+ *   action      a = argmax_a Q(s,a) + B·2·sqrt(ln N(s) / N(s,a)),  B = max(R_range,1)/(1−γ)
+ *               (ties broken at random; the original takes the first maximum)
+ *   outcome     r = the model's reward (intrinsic bonuses included); terminal with
+ *               probability termProb; s' ~ transitions. A successor with a feature outside
+ *               [featMin−ε, featMax+ε] (or not finite) is replaced by the current state.
+ *   backup      α = 10/(N(s,a)+10);  terminal: Q(s,a) += α(r − Q(s,a)), return r;
+ *               otherwise q = r + γ·G(s'), Q(s,a) += α(q − Q(s,a)) and N(s)++, N(s,a)++ only at
+ *               the first occurrence of s on the rollout's path, and
+ *               G(s) = λ·q + (1−λ)·max_a Q(s,a)  (λ = 1: Monte-Carlo return, λ = 0: one-step
+ *               backup of max Q). At the depth cap G = max_a Q(s,a).
+ *
+ * Records are keyed by the (optionally discretised) state followed, with an action history of
+ * k actions, by the k one-hot action codes (oldest first); that key is also the model's query
+ * input. Q starts U(0, 0.01), N(s) and N(s,a) start at 1. Discretisation is the original's
+ * DiscretizationAgent binning: factor = (max−min)/n, bin = int((s ± factor/2)/factor) (+ for
+ * s > 0), ds = factor·bin. With trackActual and discretisation, the rollout carries the
+ * continuous state: s'_actual = s_actual + (s' − disc(s)).
+ *
+ * setModel() starts a new model version: each record's counts are capped lazily, when the
+ * record is next touched, at N(s,a) ≤ 10 and N(s) ≤ 10·A, and each cached model prediction is
+ * re-queried lazily when next used. Unlike the original, memory is bounded, at O(1) cost per
+ * step: a new record beyond `maxStates` evicts the least recently visited record (never one on
+ * the current rollout), and beyond `maxCachedPredictions` cached predictions, the record whose
+ * predictions were used least recently loses them.
+ *
+ * Deterministic: every random draw comes from the planner's own rl_common::Random, so the same
+ * seed, model and calls give the same values and actions. Not thread-safe: callers serialise
+ * all calls (RealTimePlanner does so with a mutex); the ModelView is only read.
+ */
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "rl_agent/planner/state_hash.h"
+#include "rl_common/mdp_model.h"
+#include "rl_common/planner.h"
+#include "rl_common/random.h"
+
+namespace rl_agent {
+
+class UctPlanner : public rl_common::Planner {
+ public:
+  struct Config {
+    int numActions = 0;        ///< A, at least 1
+    double gamma = 0.99;       ///< discount, in [0, 1)
+    double lambda = 0.1;       ///< return mixing λ, in [0, 1]
+    double rewardRange = 1.0;  ///< R_max − R_min of the task, for the UCB constant
+    int maxDepth = 200;        ///< at most this many simulated actions per rollout (≥ 1)
+    /// Declared feature ranges (both empty, or one entry per state feature). Needed for
+    /// discretisation; when given, successors outside the range are replaced by the state.
+    std::vector<float> featMin;
+    std::vector<float> featMax;
+    /// Bins per feature (empty: no discretisation; one entry: every feature; 0: that feature
+    /// stays continuous).
+    std::vector<int> statesPerDim;
+    int history = 0;                 ///< k, the number of past actions in the key and model input
+    bool trackActual = true;         ///< carry the continuous state through discretised rollouts
+    float rangeEpsilon = 1e-5f;      ///< tolerance of the feature range check
+    std::size_t maxStates = 500000;  ///< state records kept (least recent evicted)
+    std::size_t maxCachedPredictions = 200000;  ///< cached model predictions (state-actions)
+  };
+
+  /// Throws std::invalid_argument, naming the option, if the configuration is invalid.
+  UctPlanner(const Config& config, std::uint64_t seed);
+  // Records link to each other: neither copyable nor movable.
+  UctPlanner(const UctPlanner&) = delete;
+  UctPlanner& operator=(const UctPlanner&) = delete;
+
+  /// Plans on `model` from now on: a new model version (counts capped, predictions stale).
+  /// Throws std::invalid_argument if `model` is null.
+  void setModel(std::shared_ptr<const rl_common::ModelView> model) override;
+
+  /// Runs rollouts from `s` (a state, not discretised) and the current action history until
+  /// the budget is spent (at least one rollout); returns the number of rollouts. Throws
+  /// std::runtime_error without a model, std::invalid_argument for a bad state or a budget
+  /// with neither a rollout limit nor a deadline.
+  long plan(const rl_common::State& s, const rl_common::PlanningBudget& budget) override;
+
+  /// The greedy action in `s` with the current action history: random among actions whose Q
+  /// is within 1e-4 of the best; a uniformly random action if `s` was never planned from.
+  int bestAction(const rl_common::State& s) override;
+
+  /// Sets the last k actions taken (oldest first), the history of the root of the next
+  /// plan() and bestAction() calls. Fewer than k actions: the missing oldest ones are "none"
+  /// (an all-zero code). Throws std::invalid_argument for an action out of range or more than
+  /// k actions.
+  void setActionHistory(const std::vector<int>& lastActions);
+  /// The current root history: k entries, oldest first, −1 for "none".
+  const std::vector<int>& actionHistory() const { return rootHistory_; }
+
+  /// `s` binned as the planner bins it (a copy of `s` without discretisation).
+  rl_common::State discretize(const rl_common::State& s) const;
+  /// The model's query input (and record key) for `s` with the current action history.
+  rl_common::State modelInput(const rl_common::State& s) const;
+
+  /// Q(s, ·) with the current action history; empty if `s` has no record.
+  std::vector<double> qValues(const rl_common::State& s) const;
+  /// N(s) (counts as capped by the latest model version); 0 if `s` has no record.
+  long stateVisits(const rl_common::State& s) const;
+  /// N(s, a), as stateVisits(); 0 if `s` has no record.
+  long actionVisits(const rl_common::State& s, int action) const;
+
+  /// Number of state records.
+  std::size_t numStates() const { return table_.size(); }
+  /// Number of cached model predictions.
+  std::size_t numCachedPredictions() const { return cachedPredictions_; }
+  /// Number of setModel() calls so far.
+  std::uint64_t modelVersion() const { return modelVersion_; }
+  const Config& config() const { return config_; }
+
+  /// Per-record cap of N(s,a) on a model change (the original's MIN_VISITS).
+  static constexpr long kVisitCap = 10;
+  /// Greedy ties: actions within this of the best value are equally good.
+  static constexpr double kTieTolerance = 1e-4;
+
+ private:
+  struct Prediction {
+    rl_common::StateActionInfo info;
+    std::uint64_t version = 0;  // 0: not cached
+  };
+  struct Record;
+  /// Links of an intrusive doubly-linked list of records (most recent first).
+  struct Links {
+    Record* prev = nullptr;
+    Record* next = nullptr;
+  };
+  struct List {
+    Record* head = nullptr;
+    Record* tail = nullptr;
+  };
+  struct Record {
+    std::vector<double> q;
+    std::vector<long> actionVisits;
+    long visits = 1;
+    std::uint64_t version = 0;              // model version whose count cap has been applied
+    std::uint64_t lastTouched = 0;          // rollout stamp: records of the current rollout stay
+    int onPath = 0;                         // occurrences on the current rollout's path
+    int cached = 0;                         // predictions cached (version != 0)
+    std::vector<Prediction> predictions;    // empty, or A entries
+    const rl_common::State* key = nullptr;  // the table's key of this record
+    Links recent;                           // in recent_: every record
+    Links cachedRecent;                     // in cachedRecent_: records with cached > 0
+  };
+  using Table = std::unordered_map<rl_common::State, Record, StateHash>;
+
+  struct Step {
+    Record* record;
+    int action;
+    double reward;
+    double alpha;
+    bool terminal;
+    bool first;
+  };
+
+  void rollout(const rl_common::State& root);
+  void sampleSuccessor(const rl_common::StateActionInfo& info);
+  bool inRange(const rl_common::State& s) const;
+  void appendDiscretized(const rl_common::State& s, rl_common::State& out) const;
+  void buildKey(const rl_common::State& actual, const std::vector<int>& history,
+                rl_common::State& key) const;
+  Record& touch(const rl_common::State& key);
+  const Record* find(const rl_common::State& s, const char* where) const;
+  int selectUcbAction(const Record& r);
+  const rl_common::StateActionInfo& prediction(Record& r, const rl_common::State& key, int action);
+  void evictRecord(Record& r);
+  void dropPredictions(Record& r);
+  static void unlink(List& list, Links Record::*links, Record& r);
+  static void pushFront(List& list, Links Record::*links, Record& r);
+  void validateState(const rl_common::State& s, const char* where) const;
+  long cappedVisits(const Record& r) const;
+  long cappedActionVisits(const Record& r, int action) const;
+  static double maxQ(const Record& r);
+
+  Config config_;
+  rl_common::Random rng_;
+  double ucbConstant_;  // B·2
+  bool discretising_ = false;
+  std::shared_ptr<const rl_common::ModelView> model_;
+  std::uint64_t modelVersion_ = 0;
+  std::uint64_t stamp_ = 0;
+  Table table_;
+  List recent_;        // every record, most recently touched first
+  List cachedRecent_;  // records holding predictions, most recently used first
+  std::size_t cachedPredictions_ = 0;
+  std::vector<int> rootHistory_;
+
+  // Scratch space reused across rollouts.
+  std::vector<Step> path_;
+  rl_common::State key_, actual_, next_;
+  std::vector<int> history_;
+  std::vector<double> values_;
+};
+
+}  // namespace rl_agent

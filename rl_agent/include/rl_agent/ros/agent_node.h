@@ -1,0 +1,67 @@
+/**
+ * AgentNode: runs an rl_common::Agent against an environment node over the original rl_msgs
+ * protocol (shared/spec/ORIGINAL.md §2.2-2.3), so the original env node or ours can drive it.
+ *
+ * Topics (relative: `/rl_env/...`, `/rl_agent/...` without a namespace):
+ *   subscribes rl_env/rl_env_description, rl_env/rl_state_reward, rl_env/rl_seed
+ *   publishes  rl_agent/rl_action, rl_agent/rl_experiment_info,
+ *              rl_agent/rl_reward_breakdown (new: RLRewardBreakdown, every step)
+ *   service    rl_agent/reset (rl_msgs/Reset, new): rebuild the agent (optionally reseeded)
+ *
+ * A description (re)builds the agent; each seed message is learned at once; a state message
+ * starts an episode (first action), continues it (next action) or ends it (terminal: last
+ * action, an RLExperimentInfo, no action published), as the original. Malformed messages
+ * (wrong lengths, NaN or infinite values, a state before any description) are logged and
+ * dropped; the node keeps running.
+ */
+#pragma once
+
+#include <rl_msgs/RLEnvDescription.h>
+#include <rl_msgs/RLEnvSeedExperience.h>
+#include <rl_msgs/RLStateReward.h>
+#include <rl_msgs/Reset.h>
+#include <ros/ros.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "rl_agent/agent/agent_options.h"
+#include "rl_common/agent.h"
+#include "rl_common/environment.h"
+
+namespace rl_agent {
+
+/// Converts a description message; throws std::invalid_argument if it is inconsistent
+/// (ranges not matching num_states, fewer than one action, non-finite values).
+rl_common::EnvironmentDescription fromMessage(const rl_msgs::RLEnvDescription& m);
+
+class AgentNode {
+ public:
+  AgentNode(ros::NodeHandle nh, const AgentOptions& options);
+  ~AgentNode();
+
+  void onDescription(const rl_msgs::RLEnvDescription::ConstPtr& msg);
+  void onSeed(const rl_msgs::RLEnvSeedExperience::ConstPtr& msg);
+  void onState(const rl_msgs::RLStateReward::ConstPtr& msg);
+  bool onReset(rl_msgs::Reset::Request& req, rl_msgs::Reset::Response& res);
+
+ private:
+  void buildAgent();
+  bool validState(const std::vector<float>& s, const char* what) const;
+
+  ros::NodeHandle nh_;
+  AgentOptions options_;
+  std::optional<rl_common::EnvironmentDescription> description_;
+  std::unique_ptr<rl_common::Agent> agent_;
+  bool firstAction_ = true;
+  int episode_ = 0;
+  int actions_ = 0;
+  long steps_ = 0;
+  float episodeReward_ = 0.0f;
+  ros::Subscriber descriptionSub_, stateSub_, seedSub_;
+  ros::Publisher actionPub_, infoPub_, breakdownPub_;
+  ros::ServiceServer resetSrv_;
+};
+
+}  // namespace rl_agent

@@ -1,0 +1,167 @@
+#include "rl_agent/agent/agent_options.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "rl_common/registry.h"
+
+namespace rl_agent {
+
+void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
+  using rl_common::atLeast;
+  using rl_common::greaterThan;
+  using rl_common::inRange;
+  p.value("agent", &o->agent, "agent type");
+  p.value("gamma|discountfactor", &o->gamma, "discount factor", inRange(0.0f, 1.0f));
+  p.value("epsilon", &o->epsilon, "epsilon-greedy exploration rate", inRange(0.0f, 1.0f));
+  p.value("alpha", &o->alpha, "learning rate", inRange(0.0f, 1.0f));
+  p.value("initialvalue", &o->initialvalue, "initial Q-value");
+  p.value("actrate", &o->actrate, "actions per second (Hz) of the real-time agent",
+          greaterThan(0.0f));
+  p.value("lambda", &o->lambda, "UCT(lambda) mixing or Sarsa(lambda) trace decay",
+          inRange(0.0f, 1.0f));
+  p.value("m", &o->m, "visits before a state-action is known (R-MAX)", atLeast(0));
+  p.aliasedChoice("model", &o->model,
+                  {{"tabular", "tabular"},
+                   {"tree", "tree"},
+                   {"c45tree", "tree"},
+                   {"texplore", "tree"},
+                   {"m5tree", "m5tree"}},
+                  "model type");
+  p.choice("explore", &o->explore,
+           {"unknown", "greedy", "epsilongreedy", "unvisitedstates", "unvisitedactions",
+            "variancenovelty"},
+           "exploration type");
+  p.aliasedChoice("combo|modelcombo", &o->combo,
+                  {{"average", "average"},
+                   {"weighted", "weighted"},
+                   {"best", "best"},
+                   {"separate", "separate"}},
+                  "how a forest combines its trees");
+  p.aliasedChoice("planner", &o->planner,
+                  {{"vi", "vi"},
+                   {"valueiteration", "vi"},
+                   {"pi", "pi"},
+                   {"policyiteration", "pi"},
+                   {"sweeping", "sweeping"},
+                   {"prioritizedsweeping", "sweeping"},
+                   {"uct", "uct"},
+                   {"parallel-uct", "parallel-uct"},
+                   {"paralleluct", "parallel-uct"},
+                   {"realtimeuct", "parallel-uct"},
+                   {"realtime-uct", "parallel-uct"},
+                   {"delayed-uct", "delayed-uct"},
+                   {"delayeduct", "delayed-uct"},
+                   {"delayed-parallel-uct", "delayed-parallel-uct"},
+                   {"delayedparalleluct", "delayed-parallel-uct"}},
+                  "planner");
+  p.value("nmodels", &o->nmodels, "trees per forest", greaterThan(0));
+  p.flag("reltrans", &o->reltrans, true, "predict relative changes s'-s (default)");
+  p.flag("abstrans", &o->reltrans, false, "predict absolute next states s'");
+  p.value("v|b", &o->v, "VANIR variance (tree disagreement) reward coefficient", atLeast(0.0f));
+  p.value("n", &o->n, "VANIR novelty reward coefficient", atLeast(0.0f));
+  p.value("history", &o->history, "action-history length", atLeast(0));
+  p.value("nstates", &o->nstates, "bins per feature (0: none)", atLeast(0));
+  p.value("k", &o->k, "Dyna model updates per step", atLeast(0));
+  p.value("filename", &o->filename, "policy file");
+  p.value("rollouts", &o->rollouts,
+          "UCT rollouts per step, planned synchronously for reproducible runs (0: plan in real "
+          "time at --actrate)",
+          atLeast(0L));
+}
+
+namespace {
+
+const std::vector<std::string> kModelFree = {"qlearner", "sarsa", "dyna"};
+const std::vector<std::string> kModelBased = {"texplore", "modelbased", "rmax"};
+
+bool isOneOf(const std::string& name, const std::vector<std::string>& names) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+void requireAgent(const rl_common::OptionParser& p, const AgentOptions& o, const char* option,
+                  const std::vector<std::string>& agents) {
+  if (p.given(option) && !isOneOf(o.agent, agents)) {
+    throw rl_common::OptionError(std::string("option --") + option + " applies only to --agent " +
+                                 rl_common::joinNames(agents) + ", not to '" + o.agent + "'");
+  }
+}
+
+}  // namespace
+
+void applyAgentDefaults(const rl_common::OptionParser& p, AgentOptions* o) {
+  auto setIfUnset = [&p](const char* option, auto* field, auto value) {
+    if (!p.given(option)) *field = value;
+  };
+  if (o->agent == "rmax") {
+    setIfUnset("model", &o->model, std::string("tabular"));
+    setIfUnset("explore", &o->explore, std::string("unknown"));
+    setIfUnset("combo", &o->combo, std::string("best"));
+    setIfUnset("planner", &o->planner, std::string("vi"));
+    setIfUnset("nmodels", &o->nmodels, 1);
+    setIfUnset("reltrans", &o->reltrans, false);
+    setIfUnset("m", &o->m, 5);
+  } else if (o->agent == "texplore") {
+    setIfUnset("model", &o->model, std::string("tree"));
+    setIfUnset("combo", &o->combo, std::string("average"));
+    setIfUnset("planner", &o->planner, std::string("parallel-uct"));
+    setIfUnset("nmodels", &o->nmodels, 5);
+    setIfUnset("reltrans", &o->reltrans, true);
+    setIfUnset("m", &o->m, 0);
+    // TEXPLORE-VANIR when v or n is non-zero, plain greedy TEXPLORE otherwise (as the original).
+    setIfUnset("explore", &o->explore,
+               std::string(o->v != 0.0f || o->n != 0.0f ? "variancenovelty" : "greedy"));
+  }
+}
+
+void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) {
+  std::vector<std::string> agents = kModelFree;
+  agents.insert(agents.end(), kModelBased.begin(), kModelBased.end());
+  agents.push_back("savedpolicy");
+  requireAgent(p, o, "alpha", kModelFree);
+  requireAgent(p, o, "initialvalue", kModelFree);
+  requireAgent(p, o, "k", {"dyna"});
+  std::vector<std::string> lambdaAgents = kModelBased;
+  lambdaAgents.push_back("sarsa");
+  requireAgent(p, o, "lambda", lambdaAgents);
+  for (const char* option : {"actrate", "m", "model", "planner", "combo", "nmodels", "reltrans",
+                             "abstrans", "v", "n", "history", "rollouts"}) {
+    requireAgent(p, o, option, kModelBased);
+  }
+  const bool modelBased = isOneOf(o.agent, kModelBased);
+  if (modelBased) {
+    const bool searchPlanner = o.planner != "vi" && o.planner != "pi" && o.planner != "sweeping";
+    for (const char* option : {"actrate", "lambda", "history", "rollouts"}) {
+      if (p.given(option) && !searchPlanner) {
+        throw rl_common::OptionError(std::string("option --") + option +
+                                     " needs a UCT planner (uct, parallel-uct, delayed-uct, "
+                                     "delayed-parallel-uct), not '" +
+                                     o.planner + "'");
+      }
+    }
+    if (p.given("epsilon") && o.explore != "epsilongreedy") {
+      throw rl_common::OptionError(
+          "option --epsilon applies to model-based agents only with --explore epsilongreedy");
+    }
+    if ((p.given("v") || p.given("b")) && o.explore != "variancenovelty") {
+      throw rl_common::OptionError("option --v needs --explore variancenovelty");
+    }
+    if (p.given("n") && o.explore != "variancenovelty" && o.explore != "unvisitedstates" &&
+        o.explore != "unvisitedactions") {
+      throw rl_common::OptionError(
+          "option --n needs --explore variancenovelty, unvisitedstates or unvisitedactions");
+    }
+    if (o.combo != "best" && o.nmodels == 1) {
+      throw rl_common::OptionError("option --combo " + o.combo +
+                                   " needs --nmodels > 1 (one tree has nothing to combine)");
+    }
+    if (o.agent == "rmax" && o.model != "tabular") {
+      throw rl_common::OptionError("--agent rmax needs --model tabular");
+    }
+  } else if (p.given("explore") && o.explore != "greedy" && o.explore != "epsilongreedy") {
+    throw rl_common::OptionError("option --explore for '" + o.agent +
+                                 "' must be greedy or epsilongreedy");
+  }
+}
+
+}  // namespace rl_agent

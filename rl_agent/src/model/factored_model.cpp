@@ -1,0 +1,172 @@
+#include "rl_agent/model/factored_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+namespace rl_agent {
+
+namespace {
+
+constexpr double kMinOutcomeProb = 1e-6;  // combinations below this are pruned
+constexpr float kUnknownReward = -0.001f;
+
+RandomForest makeForest(const FactoredModel::Config& c, std::uint64_t seed, const char* stream,
+                        std::uint64_t index) {
+  return RandomForest(c.forest, rl_common::Random::deriveSeed(seed, stream, index));
+}
+
+std::shared_ptr<const FactoredModel::Config> checked(const FactoredModel::Config& c) {
+  if (c.numActions < 1) {
+    throw std::invalid_argument("FactoredModel::FactoredModel(): numActions must be >= 1");
+  }
+  if (c.featMin.empty() || c.featMin.size() != c.featMax.size()) {
+    throw std::invalid_argument(
+        "FactoredModel::FactoredModel(): feature "
+        "ranges must be non-empty and equally long");
+  }
+  if (c.extraInputs < 0) {
+    throw std::invalid_argument("FactoredModel::FactoredModel(): extraInputs must be >= 0");
+  }
+  return std::make_shared<const FactoredModel::Config>(c);
+}
+
+}  // namespace
+
+FactoredModel::FactoredModel(const Config& config, std::uint64_t seed)
+    : config_(checked(config)),
+      reward_(makeForest(config, seed, "reward", 0)),
+      terminal_(makeForest(config, seed, "terminal", 0)) {
+  for (std::size_t j = 0; j < config.featMin.size(); ++j) {
+    features_.push_back(makeForest(config, seed, "feature", j));
+  }
+}
+
+bool FactoredModel::update(const std::vector<rl_common::Experience>& experiences) {
+  const std::size_t d = config_->featMin.size();
+  const std::size_t inputLen = d + static_cast<std::size_t>(config_->extraInputs);
+  bool changed = false;
+  std::vector<float> x;
+  for (const auto& e : experiences) {
+    if (e.s.size() != inputLen || e.next.size() < d) {
+      throw std::invalid_argument("FactoredModel::update(): experience state has " +
+                                  std::to_string(e.s.size()) + " values, expected " +
+                                  std::to_string(inputLen));
+    }
+    if (e.action < 0 || e.action >= config_->numActions) {
+      throw std::invalid_argument("FactoredModel::update(): action " + std::to_string(e.action) +
+                                  " out of range");
+    }
+    x.assign(e.s.begin(), e.s.end());
+    for (int a = 0; a < config_->numActions; ++a) x.push_back(a == e.action ? 1.0f : 0.0f);
+    if (!e.terminal) {
+      for (std::size_t j = 0; j < d; ++j) {
+        const float out = config_->relativeTransitions ? e.next[j] - e.s[j] : e.next[j];
+        changed |= features_[j].addInstance(x, out);
+      }
+    }
+    changed |= reward_.addInstance(x, e.reward);
+    if (config_->episodic) changed |= terminal_.addInstance(x, e.terminal ? 1.0f : 0.0f);
+    ++experiences_;
+  }
+  return changed;
+}
+
+std::shared_ptr<const FactoredModel::View> FactoredModel::factoredView() const {
+  auto v = std::make_shared<View>();
+  v->config_ = config_;
+  for (const auto& f : features_) v->features_.push_back(f.snapshot());
+  v->reward_ = reward_.snapshot();
+  v->terminal_ = terminal_.snapshot();
+  v->experiences_ = experiences_;
+  return v;
+}
+
+std::vector<float> FactoredModel::View::treeInput(const rl_common::State& input, int action) const {
+  const std::size_t inputLen = config_->featMin.size() + config_->extraInputs;
+  if (input.size() != inputLen) {
+    throw std::invalid_argument("FactoredModel::View: query state has " +
+                                std::to_string(input.size()) + " values, expected " +
+                                std::to_string(inputLen));
+  }
+  if (action < 0 || action >= config_->numActions) {
+    throw std::invalid_argument("FactoredModel::View: action " + std::to_string(action) +
+                                " out of range");
+  }
+  std::vector<float> x(input.begin(), input.end());
+  for (int a = 0; a < config_->numActions; ++a) x.push_back(a == action ? 1.0f : 0.0f);
+  return x;
+}
+
+Distribution FactoredModel::View::featureDistribution(const rl_common::State& input, int action,
+                                                      std::size_t feature) const {
+  return features_.at(feature).predict(treeInput(input, action));
+}
+
+rl_common::StateActionInfo FactoredModel::View::query(const rl_common::State& input,
+                                                      int action) const {
+  const std::vector<float> x = treeInput(input, action);
+  const std::size_t d = config_->featMin.size();
+  rl_common::StateActionInfo info;
+  const rl_common::State current(input.begin(), input.begin() + d);
+  if (experiences_ == 0) {
+    info.transitions.emplace_back(current, 1.0);
+    info.reward = info.externalReward = kUnknownReward;
+    info.known = false;
+    return info;
+  }
+  // Independent product of the per-feature distributions, depth-first with
+  // pruning.
+  std::vector<std::pair<rl_common::State, double>> partial{{rl_common::State(), 1.0}};
+  for (std::size_t j = 0; j < d; ++j) {
+    const Distribution dist = features_[j].predict(x);
+    std::vector<std::pair<rl_common::State, double>> next;
+    next.reserve(partial.size() * std::max<std::size_t>(1, dist.size()));
+    std::pair<rl_common::State, double> best{rl_common::State(), -1.0};
+    for (const auto& [prefix, p] : partial) {
+      for (const auto& [value, q] : dist) {
+        const float v = config_->relativeTransitions ? current[j] + value : value;
+        if (p * q < kMinOutcomeProb) {
+          if (p * q > best.second) {
+            best = {prefix, p * q};
+            best.first.push_back(v);
+          }
+          continue;
+        }
+        rl_common::State s = prefix;
+        s.push_back(v);
+        next.emplace_back(std::move(s), p * q);
+      }
+    }
+    if (next.empty()) next.push_back(std::move(best));  // keep the most probable outcome
+    partial = std::move(next);
+  }
+  double total = 0.0;
+  for (const auto& o : partial) total += o.second;
+  std::map<rl_common::State, double> merged;
+  for (auto& [s, p] : partial) merged[s] += p / total;
+  info.transitions.assign(merged.begin(), merged.end());
+  info.reward = info.externalReward = static_cast<float>(expectation(reward_.predict(x)));
+  if (config_->episodic) {
+    double t = 0.0;
+    for (const auto& [value, p] : terminal_.predict(x)) {
+      t += std::clamp(static_cast<double>(value), 0.0, 1.0) * p;
+    }
+    info.termProb = static_cast<float>(t);
+  }
+  info.known = true;
+  return info;
+}
+
+double FactoredModel::View::variance(const rl_common::State& input, int action) const {
+  const std::vector<float> x = treeInput(input, action);
+  double sum = 0.0;
+  for (const auto& f : features_) sum += f.variance(x);
+  sum += reward_.variance(x);
+  if (config_->episodic) sum += terminal_.variance(x);
+  return sum / static_cast<double>(features_.size() + 2);
+}
+
+}  // namespace rl_agent

@@ -1,0 +1,245 @@
+#include "rl_agent/model/random_forest.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace rl_agent {
+
+namespace {
+
+/// Sum of weight_i * P_i over the distributions, equal outcomes merged, sorted by value.
+Distribution combine(const std::vector<Distribution>& dists, const std::vector<double>& weights) {
+  Distribution out;
+  for (std::size_t i = 0; i < dists.size(); ++i) {
+    if (weights[i] == 0.0) continue;
+    for (const auto& [v, p] : dists[i]) out.emplace_back(v, weights[i] * p);
+  }
+  std::stable_sort(out.begin(), out.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  Distribution merged;
+  for (const auto& [v, p] : out) {
+    if (!merged.empty() && merged.back().first == v) {
+      merged.back().second += p;
+    } else {
+      merged.emplace_back(v, p);
+    }
+  }
+  return merged;
+}
+
+std::size_t bestTree(const std::vector<double>& accuracy) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < accuracy.size(); ++i) {
+    if (accuracy[i] > accuracy[best]) best = i;
+  }
+  return best;
+}
+
+const double kLn100 = std::log(100.0);
+
+}  // namespace
+
+Combination combinationFromName(const std::string& name) {
+  if (name == "average") return Combination::Average;
+  if (name == "weighted") return Combination::WeightedAverage;
+  if (name == "best") return Combination::Best;
+  if (name == "separate") return Combination::Separate;
+  throw std::invalid_argument("combinationFromName(): unknown combination '" + name +
+                              "'; valid: average, weighted, best, separate");
+}
+
+double klDivergence(const Distribution& p, const Distribution& q) {
+  for (const Distribution* d : {&p, &q}) {
+    for (const auto& [v, prob] : *d) {
+      if (!(prob >= 0.0 && prob <= 1.0)) {
+        throw std::invalid_argument("klDivergence(): probability " + std::to_string(prob) +
+                                    " of outcome " + std::to_string(v) + " is outside [0, 1]");
+      }
+    }
+  }
+  double kl = 0.0;
+  for (const auto& [v, pv] : p) {
+    if (pv <= 0.0) continue;
+    double qv = probabilityOf(q, v);
+    if (qv <= 0.0) qv = 0.01;  // the original's zero-probability epsilon
+    kl += pv * std::log(pv / qv);
+  }
+  return kl;
+}
+
+// ------------------------------------------------------------------------------------------
+// Snapshot
+// ------------------------------------------------------------------------------------------
+
+std::vector<Distribution> RandomForest::Snapshot::treePredictions(
+    const std::vector<float>& input) const {
+  std::vector<Distribution> out;
+  out.reserve(trees_.size());
+  for (const C45Tree::Snapshot& t : trees_) out.push_back(t.predict(input));
+  return out;
+}
+
+Distribution RandomForest::Snapshot::predict(const std::vector<float>& input) const {
+  if (trees_.empty()) return {{0.0f, 1.0}};  // a default-constructed snapshot
+  switch (combination_) {
+    case Combination::Separate:
+      return trees_[0].predict(input);
+    case Combination::Best:
+      return trees_[bestTree(accuracy_)].predict(input);
+    case Combination::WeightedAverage: {
+      double sum = 0.0;
+      for (double a : accuracy_) sum += a;
+      if (sum > 0.0) {
+        std::vector<double> w(accuracy_.size());
+        for (std::size_t i = 0; i < w.size(); ++i) w[i] = accuracy_[i] / sum;
+        return combine(treePredictions(input), w);
+      }
+      break;  // no tree has been right yet: plain average
+    }
+    case Combination::Average:
+      break;
+  }
+  return combine(treePredictions(input),
+                 std::vector<double>(trees_.size(), 1.0 / static_cast<double>(trees_.size())));
+}
+
+double RandomForest::Snapshot::variance(const std::vector<float>& input) const {
+  const std::size_t m = trees_.size();
+  if (m < 2) return 0.0;
+  const std::vector<Distribution> p = treePredictions(input);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < m; ++i) {
+    for (std::size_t j = 0; j < m; ++j) {
+      if (i != j) sum += klDivergence(p[i], p[j]);
+    }
+  }
+  return sum / static_cast<double>(m * (m - 1)) / kLn100;
+}
+
+// ------------------------------------------------------------------------------------------
+// RandomForest
+// ------------------------------------------------------------------------------------------
+
+RandomForest::RandomForest(const Config& config, std::uint64_t seed)
+    : config_(config), rng_(rl_common::Random::deriveSeed(seed, "forest_sampling")) {
+  if (config.numTrees < 1) {
+    throw std::invalid_argument("RandomForest::RandomForest(): numTrees must be >= 1, got " +
+                                std::to_string(config.numTrees));
+  }
+  if (!(config.expPct >= 0.0 && config.expPct <= 1.0)) {
+    throw std::invalid_argument("RandomForest::RandomForest(): expPct must be in [0, 1], got " +
+                                std::to_string(config.expPct));
+  }
+  trees_.reserve(static_cast<std::size_t>(config.numTrees));
+  for (int i = 0; i < config.numTrees; ++i) {
+    C45Tree::Config treeConfig = config.tree;
+    if (config.combination == Combination::Separate && i == 0) treeConfig.featPct = 0.0;
+    // Throws (C45Tree::C45Tree()) on a bad tree configuration.
+    trees_.emplace_back(treeConfig,
+                        rl_common::Random::deriveSeed(seed, "c45_tree", static_cast<unsigned>(i)));
+  }
+  accuracy_.assign(trees_.size(), 0.0);
+}
+
+RandomForest::Snapshot RandomForest::snapshot() const {
+  Snapshot s;
+  s.trees_.reserve(trees_.size());
+  for (const C45Tree& t : trees_) s.trees_.push_back(t.snapshot());
+  s.accuracy_ = accuracy_;
+  s.combination_ = config_.combination;
+  return s;
+}
+
+void RandomForest::checkInstance(const char* method, const std::vector<float>& input,
+                                 float output) const {
+  if (input.empty()) {
+    throw std::invalid_argument(std::string("RandomForest::") + method + ": empty input");
+  }
+  if (numInputs_ != 0 && input.size() != numInputs_) {
+    throw std::invalid_argument(std::string("RandomForest::") + method + ": input has " +
+                                std::to_string(input.size()) + " values, expected " +
+                                std::to_string(numInputs_));
+  }
+  for (float x : input) {
+    if (std::isnan(x)) {
+      throw std::invalid_argument(std::string("RandomForest::") + method + ": NaN input");
+    }
+  }
+  if (std::isnan(output)) {
+    throw std::invalid_argument(std::string("RandomForest::") + method + ": NaN output");
+  }
+}
+
+std::vector<std::size_t> RandomForest::sampleTrees(const std::vector<float>& input, float output) {
+  // Running accuracy, scored before the trees learn the instance.
+  const double t = static_cast<double>(instances_);
+  for (std::size_t i = 0; i < trees_.size(); ++i) {
+    const double hit = probabilityOf(trees_[i].predict(input), output) > 0.5 ? 1.0 : 0.0;
+    accuracy_[i] = accuracy_[i] * t / (t + 1.0) + hit / (t + 1.0);
+  }
+  ++instances_;
+  numInputs_ = input.size();
+
+  std::vector<std::size_t> chosen;
+  const bool separate = config_.combination == Combination::Separate;
+  if (separate) chosen.push_back(0);  // the planning tree learns everything
+  for (std::size_t i = separate ? 1 : 0; i < trees_.size(); ++i) {
+    if (rng_.uniform() < config_.expPct) chosen.push_back(i);
+  }
+  if (chosen.empty()) {
+    chosen.push_back(
+        static_cast<std::size_t>(rng_.uniformInt(0, static_cast<int>(trees_.size()) - 1)));
+  }
+  return chosen;
+}
+
+bool RandomForest::addInstance(const std::vector<float>& input, float output) {
+  checkInstance("addInstance()", input, output);
+  bool changed = false;
+  for (std::size_t i : sampleTrees(input, output)) {
+    changed = trees_[i].addInstance(input, output) || changed;
+  }
+  return changed;
+}
+
+bool RandomForest::addInstances(const std::vector<std::vector<float>>& inputs,
+                                const std::vector<float>& outputs) {
+  if (inputs.size() != outputs.size()) {
+    throw std::invalid_argument("RandomForest::addInstances(): " + std::to_string(inputs.size()) +
+                                " inputs but " + std::to_string(outputs.size()) + " outputs");
+  }
+  // Validate everything first so that a bad instance leaves the forest untouched.
+  const std::size_t before = numInputs_;
+  try {
+    for (std::size_t k = 0; k < inputs.size(); ++k) {
+      checkInstance("addInstances()", inputs[k], outputs[k]);
+      numInputs_ = inputs[k].size();  // later instances must match the first
+    }
+  } catch (...) {
+    numInputs_ = before;
+    throw;
+  }
+  numInputs_ = before;
+  // Accuracies are scored against the trees as they were before the batch; each tree then
+  // learns its share in one call (at most one rebuild per tree).
+  std::vector<std::vector<std::vector<float>>> treeInputs(trees_.size());
+  std::vector<std::vector<float>> treeOutputs(trees_.size());
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    for (std::size_t i : sampleTrees(inputs[k], outputs[k])) {
+      treeInputs[i].push_back(inputs[k]);
+      treeOutputs[i].push_back(outputs[k]);
+    }
+  }
+  bool changed = false;
+  for (std::size_t i = 0; i < trees_.size(); ++i) {
+    if (!treeInputs[i].empty()) {
+      changed = trees_[i].addInstances(treeInputs[i], treeOutputs[i]) || changed;
+    }
+  }
+  return changed;
+}
+
+}  // namespace rl_agent

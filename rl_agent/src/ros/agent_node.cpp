@@ -1,0 +1,202 @@
+#include "rl_agent/ros/agent_node.h"
+
+#include <rl_msgs/RLAction.h>
+#include <rl_msgs/RLExperimentInfo.h>
+#include <rl_msgs/RLRewardBreakdown.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "rl_agent/agent/agent_registry.h"
+#include "rl_agent/agent/reward_breakdown_source.h"
+
+namespace rl_agent {
+
+namespace {
+
+bool allFinite(const std::vector<float>& v) {
+  for (float x : v) {
+    if (!std::isfinite(x)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+rl_common::EnvironmentDescription fromMessage(const rl_msgs::RLEnvDescription& m) {
+  const float n = m.num_states;
+  if (!(m.num_actions >= 1.0f) || m.num_actions != std::floor(m.num_actions)) {
+    throw std::invalid_argument("num_actions must be a whole number >= 1, got " +
+                                std::to_string(m.num_actions));
+  }
+  if (!(n >= 1.0f) || m.min_state_range.size() != static_cast<std::size_t>(n) ||
+      m.max_state_range.size() != static_cast<std::size_t>(n)) {
+    throw std::invalid_argument("num_states (" + std::to_string(n) +
+                                ") does not match the range lengths (" +
+                                std::to_string(m.min_state_range.size()) + ", " +
+                                std::to_string(m.max_state_range.size()) + ")");
+  }
+  if (!allFinite(m.min_state_range) || !allFinite(m.max_state_range) ||
+      !std::isfinite(m.max_reward) || !std::isfinite(m.reward_range)) {
+    throw std::invalid_argument("ranges and rewards must be finite");
+  }
+  rl_common::EnvironmentDescription d;
+  d.numActions = static_cast<int>(m.num_actions);
+  d.minFeatures = m.min_state_range;
+  d.maxFeatures = m.max_state_range;
+  d.maxReward = m.max_reward;
+  d.minReward = m.max_reward - m.reward_range;
+  d.episodic = m.episodic;
+  d.stochastic = m.stochastic;
+  d.title = m.title;
+  return d;
+}
+
+AgentNode::AgentNode(ros::NodeHandle nh, const AgentOptions& options) : nh_(nh), options_(options) {
+  const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
+  actionPub_ = nh_.advertise<rl_msgs::RLAction>("rl_agent/rl_action", 1);
+  infoPub_ = nh_.advertise<rl_msgs::RLExperimentInfo>("rl_agent/rl_experiment_info", 1);
+  breakdownPub_ = nh_.advertise<rl_msgs::RLRewardBreakdown>("rl_agent/rl_reward_breakdown", 10);
+  descriptionSub_ =
+      nh_.subscribe("rl_env/rl_env_description", 1, &AgentNode::onDescription, this, hints);
+  stateSub_ = nh_.subscribe("rl_env/rl_state_reward", 1, &AgentNode::onState, this, hints);
+  seedSub_ = nh_.subscribe("rl_env/rl_seed", 100, &AgentNode::onSeed, this, hints);
+  resetSrv_ = nh_.advertiseService("rl_agent/reset", &AgentNode::onReset, this);
+  ROS_INFO_STREAM_NAMED("agent", "agent '" << options_.agent << "' waiting for an environment");
+}
+
+AgentNode::~AgentNode() {
+  if (agent_ && !options_.filename.empty()) {
+    try {
+      agent_->savePolicy(options_.filename);
+    } catch (const std::exception& e) {
+      ROS_ERROR_STREAM_NAMED("agent", "could not save the policy: " << e.what());
+    }
+  }
+}
+
+void AgentNode::buildAgent() {
+  agent_ = makeAgent(options_, *description_);
+  firstAction_ = true;
+  episode_ = 0;
+  steps_ = 0;
+}
+
+void AgentNode::onDescription(const rl_msgs::RLEnvDescription::ConstPtr& msg) {
+  try {
+    description_ = fromMessage(*msg);
+  } catch (const std::invalid_argument& e) {
+    ROS_ERROR_STREAM_NAMED("agent", "dropping a malformed environment description: " << e.what());
+    return;
+  }
+  try {
+    buildAgent();
+  } catch (const std::exception& e) {
+    ROS_ERROR_STREAM_NAMED("agent", "cannot build agent '" << options_.agent << "': " << e.what());
+    agent_.reset();
+    return;
+  }
+  ROS_INFO_STREAM_NAMED("agent", "built agent '"
+                                     << options_.agent << "' (seed " << options_.seed << ") for "
+                                     << msg->title.substr(0, msg->title.find('\n')) << " with "
+                                     << description_->numFeatures() << " features, "
+                                     << description_->numActions << " actions");
+}
+
+bool AgentNode::validState(const std::vector<float>& s, const char* what) const {
+  if (s.size() != description_->numFeatures()) {
+    ROS_WARN_STREAM_NAMED("agent", "dropping a " << what << " with " << s.size()
+                                                 << " features; the environment has "
+                                                 << description_->numFeatures());
+    return false;
+  }
+  if (!allFinite(s)) {
+    ROS_WARN_STREAM_NAMED("agent", "dropping a " << what << " with NaN or infinite values");
+    return false;
+  }
+  return true;
+}
+
+void AgentNode::onSeed(const rl_msgs::RLEnvSeedExperience::ConstPtr& msg) {
+  if (!agent_) {
+    ROS_WARN_NAMED("agent", "dropping a seed experience: no agent yet (no description)");
+    return;
+  }
+  if (!validState(msg->from_state, "seed experience") ||
+      !validState(msg->to_state, "seed experience") || !std::isfinite(msg->reward) ||
+      msg->action < 0 || msg->action >= description_->numActions) {
+    ROS_WARN_NAMED("agent", "dropped a malformed seed experience");
+    return;
+  }
+  agent_->seedExperiences({{msg->from_state, msg->action, msg->reward, msg->to_state,
+                            static_cast<bool>(msg->terminal)}});
+}
+
+void AgentNode::onState(const rl_msgs::RLStateReward::ConstPtr& msg) {
+  if (!agent_) {
+    ROS_WARN_NAMED("agent", "dropping a state: no agent yet (no environment description)");
+    return;
+  }
+  if (!validState(msg->state, "state") || !std::isfinite(msg->reward)) return;
+  int action = -1;
+  if (firstAction_) {
+    action = agent_->firstAction(msg->state);
+    episodeReward_ = 0.0f;
+    actions_ = 1;
+    firstAction_ = false;
+  } else {
+    episodeReward_ += msg->reward;
+    if (msg->terminal) {
+      agent_->lastAction(msg->reward);
+      ROS_INFO_STREAM_NAMED("agent", "Episode " << episode_ << " reward: " << episodeReward_);
+      rl_msgs::RLExperimentInfo info;
+      info.episode_number = episode_;
+      info.episode_reward = episodeReward_;
+      info.number_actions = actions_;
+      infoPub_.publish(info);
+      ++episode_;
+      episodeReward_ = 0.0f;
+      firstAction_ = true;
+      return;
+    }
+    action = agent_->nextAction(msg->reward, msg->state);
+    ++actions_;
+  }
+  rl_msgs::RLRewardBreakdown b;
+  b.episode_number = episode_;
+  b.step = static_cast<int>(steps_++);
+  b.action = action;
+  b.external = msg->reward;
+  if (const auto* src = dynamic_cast<const RewardBreakdownSource*>(agent_.get())) {
+    const RewardBreakdown parts = src->lastRewardBreakdown();
+    b.variance = parts.variance;
+    b.novelty = parts.novelty;
+    b.other = parts.other;
+  }
+  breakdownPub_.publish(b);
+  rl_msgs::RLAction a;
+  a.action = action;
+  actionPub_.publish(a);
+}
+
+bool AgentNode::onReset(rl_msgs::Reset::Request& req, rl_msgs::Reset::Response& res) {
+  if (req.use_seed) options_.seed = req.seed;
+  if (!description_) {
+    res.success = false;
+    res.message = "no environment description yet";
+    return true;
+  }
+  try {
+    buildAgent();
+  } catch (const std::exception& e) {
+    res.success = false;
+    res.message = e.what();
+    return true;
+  }
+  res.success = true;
+  res.message = "agent rebuilt with seed " + std::to_string(options_.seed);
+  ROS_INFO_STREAM_NAMED("agent", res.message);
+  return true;
+}
+
+}  // namespace rl_agent

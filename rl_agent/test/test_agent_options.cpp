@@ -1,0 +1,106 @@
+#include "rl_agent/agent/agent_options.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+using rl_agent::AgentOptions;
+
+namespace {
+
+// Parses like the agent node: options, then the agent's defaults, then the rules.
+AgentOptions parse(const std::vector<std::string>& args) {
+  AgentOptions o;
+  rl_common::OptionParser p("agent", "");
+  rl_agent::addAgentOptions(p, &o);
+  p.parse(args);
+  rl_agent::applyAgentDefaults(p, &o);
+  rl_agent::checkAgentOptions(p, o);
+  return o;
+}
+
+std::string errorOf(const std::vector<std::string>& args) {
+  try {
+    parse(args);
+  } catch (const rl_common::OptionError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(AgentOptions, OriginalDefaults) {
+  const AgentOptions o;
+  EXPECT_FLOAT_EQ(o.gamma, 0.99f);
+  EXPECT_FLOAT_EQ(o.epsilon, 0.1f);
+  EXPECT_FLOAT_EQ(o.alpha, 0.3f);
+  EXPECT_FLOAT_EQ(o.actrate, 10.0f);
+  EXPECT_FLOAT_EQ(o.lambda, 0.1f);
+  EXPECT_EQ(o.m, 5);
+  EXPECT_EQ(o.k, 1000);
+  EXPECT_EQ(o.planner, "parallel-uct");
+  EXPECT_TRUE(o.reltrans);
+}
+
+TEST(AgentOptions, TexploreDefaultsAndVanir) {
+  AgentOptions o = parse({"--agent", "texplore"});
+  EXPECT_EQ(o.nmodels, 5);
+  EXPECT_EQ(o.combo, "average");
+  EXPECT_EQ(o.explore, "greedy");  // no v, n: plain TEXPLORE
+  EXPECT_EQ(o.m, 0);
+  o = parse({"--agent", "texplore", "--v", "1", "--n", "3"});
+  EXPECT_EQ(o.explore, "variancenovelty");
+  EXPECT_FLOAT_EQ(o.v, 1.0f);
+  EXPECT_FLOAT_EQ(o.n, 3.0f);
+  o = parse({"-agent", "texplore", "-b", "2"});  // --b is the original's alias of --v
+  EXPECT_FLOAT_EQ(o.v, 2.0f);
+  o = parse({"--agent", "texplore", "--nmodels", "3"});  // the user's value wins
+  EXPECT_EQ(o.nmodels, 3);
+}
+
+TEST(AgentOptions, RmaxDefaults) {
+  const AgentOptions o = parse({"--agent", "rmax"});
+  EXPECT_EQ(o.model, "tabular");
+  EXPECT_EQ(o.explore, "unknown");
+  EXPECT_EQ(o.planner, "vi");
+  EXPECT_FALSE(o.reltrans);
+  EXPECT_NE(errorOf({"--agent", "rmax", "--model", "tree"}).find("tabular"), std::string::npos);
+}
+
+TEST(AgentOptions, OptionsApplyOnlyWhereMeaningful) {
+  EXPECT_NE(errorOf({"--agent", "texplore", "--alpha", "0.1"})
+                .find("--alpha applies only to --agent qlearner, sarsa, dyna"),
+            std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "qlearner", "--v", "1"}).find("--v applies only"),
+            std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "qlearner", "--k", "5"}).find("dyna"), std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "modelbased", "--combo", "average"}).find("--nmodels > 1"),
+            std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "rmax", "--actrate", "5"}).find("UCT planner"), std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "qlearner", "--explore", "unknown"}).find("greedy"),
+            std::string::npos);
+}
+
+TEST(AgentOptions, OriginalBugsFixed) {
+  // --epsilon works for Q-learning without --explore epsilongreedy (the original refused it).
+  EXPECT_FLOAT_EQ(parse({"--agent", "qlearner", "--epsilon", "0.2"}).epsilon, 0.2f);
+  // --n is usable with the unvisited-* bonuses (the original rejected it).
+  const AgentOptions o =
+      parse({"--agent", "texplore", "--explore", "unvisitedactions", "--n", "2"});
+  EXPECT_EQ(o.explore, "unvisitedactions");
+  EXPECT_FLOAT_EQ(o.n, 2.0f);
+  // Model-based agents take --epsilon with epsilon-greedy exploration.
+  EXPECT_TRUE(
+      errorOf({"--agent", "modelbased", "--explore", "epsilongreedy", "--epsilon", "0.3"}).empty());
+  EXPECT_FALSE(errorOf({"--agent", "modelbased", "--epsilon", "0.3"}).empty());
+}
+
+TEST(AgentOptions, ValuesAreValidated) {
+  EXPECT_NE(errorOf({"--gamma", "1.5"}).find("must be in [0, 1]"), std::string::npos);
+  EXPECT_NE(errorOf({"--planner", "astar"}).find("valid values: vi, valueiteration"),
+            std::string::npos);
+  EXPECT_NE(errorOf({"--nmodels", "0"}).find("must be > 0"), std::string::npos);
+  EXPECT_EQ(parse({"--agent", "texplore", "--planner", "realtime-uct"}).planner, "parallel-uct");
+}
