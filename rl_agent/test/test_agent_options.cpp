@@ -104,3 +104,48 @@ TEST(AgentOptions, ValuesAreValidated) {
   EXPECT_NE(errorOf({"--nmodels", "0"}).find("must be > 0"), std::string::npos);
   EXPECT_EQ(parse({"--agent", "texplore", "--planner", "realtime-uct"}).planner, "parallel-uct");
 }
+
+TEST(AgentOptions, ComparisonExplorersAndTau) {
+  // Boltzmann with the paper's temperature; --tau only with it.
+  AgentOptions o = parse({"--agent", "texplore", "--explore", "boltzmann", "--tau", "0.2"});
+  EXPECT_EQ(o.explore, "boltzmann");
+  EXPECT_FLOAT_EQ(o.tau, 0.2f);
+  EXPECT_NE(errorOf({"--agent", "texplore", "--tau", "0.5"}).find("--tau needs --explore"),
+            std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "texplore", "--explore", "boltzmann", "--tau", "0"}), "");
+  EXPECT_NE(errorOf({"--agent", "qlearner", "--tau", "0.5"}), "");
+  // Competence and prederror weigh their bonus with --v (1 unless given).
+  o = parse({"--agent", "texplore", "--explore", "competence"});
+  EXPECT_FLOAT_EQ(o.v, 1.0f);
+  o = parse({"--agent", "texplore", "--explore", "prederror", "--v", "3"});
+  EXPECT_FLOAT_EQ(o.v, 3.0f);
+  EXPECT_NE(errorOf({"--agent", "texplore", "--explore", "random", "--v", "1"}), "");
+  EXPECT_EQ(parse({"--agent", "modelbased", "--model", "tabular", "--explore", "random"}).model,
+            "tabular");
+}
+
+TEST(AgentOptions, ModelExplorerAndPlannerCombinations) {
+  EXPECT_NE(errorOf({"--agent", "modelbased", "--model", "tabular", "--explore", "competence"})
+                .find("not available with --model tabular"),
+            std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "modelbased", "--model", "m5tree", "--explore", "unknown",
+                     "--planner", "uct"}),
+            "");
+  EXPECT_NE(
+      errorOf({"--agent", "modelbased", "--model", "m5tree", "--planner", "vi"}).find("--nstates"),
+      std::string::npos);
+  EXPECT_EQ(
+      parse({"--agent", "modelbased", "--model", "m5tree", "--planner", "vi", "--nstates", "10"})
+          .planner,
+      "vi");
+  EXPECT_NE(errorOf({"--agent", "rmax", "--explore", "greedy"}).find("--explore unknown"),
+            std::string::npos);
+  for (const char* planner :
+       {"delayeduct", "delayed-parallel-uct", "prioritizedsweeping", "policyiteration"}) {
+    EXPECT_EQ(errorOf({"--agent", "modelbased", "--planner", planner}), "") << planner;
+  }
+  // --k for dyna only; --lambda for sarsa too.
+  EXPECT_EQ(parse({"--agent", "dyna", "--k", "10"}).k, 10);
+  EXPECT_NE(errorOf({"--agent", "sarsa", "--k", "10"}), "");
+  EXPECT_FLOAT_EQ(parse({"--agent", "sarsa", "--lambda", "0.9"}).lambda, 0.9f);
+}

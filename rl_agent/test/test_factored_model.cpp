@@ -71,9 +71,10 @@ TEST(FactoredModel, PredictsADeterministicDomainExactly) {
       const Experience truth = corridor(x, a);
       const auto info = view->query({float(x)}, a);
       ASSERT_TRUE(info.known);
-      ASSERT_EQ(info.transitions.size(), 1u) << "x=" << x << " a=" << a;
-      if (!truth.terminal) EXPECT_EQ(info.transitions[0].first, truth.next);
-      EXPECT_NEAR(info.transitions[0].second, 1.0, 1e-9);
+      const auto next = rl_common::expandTransitions(info);
+      ASSERT_EQ(next.size(), 1u) << "x=" << x << " a=" << a;
+      if (!truth.terminal) EXPECT_EQ(next[0].first, truth.next);
+      EXPECT_NEAR(next[0].second, 1.0, 1e-9);
       EXPECT_NEAR(info.reward, truth.reward, 1e-6) << "x=" << x << " a=" << a;
       EXPECT_NEAR(info.termProb, truth.terminal ? 1.0 : 0.0, 1e-6);
       EXPECT_NEAR(view->variance({float(x)}, a), 0.0, 1e-12);
@@ -93,9 +94,9 @@ TEST(FactoredModel, RelativeTransitionsGeneraliseAcrossStates) {
     for (int x = 1; x < 3; ++x) some.push_back(corridor(x, 1));
   }
   model.update(some);
-  const auto info = model.view()->query({3.0f}, 1);
-  ASSERT_EQ(info.transitions.size(), 1u);
-  EXPECT_EQ(info.transitions[0].first, State{4.0f});
+  const auto next = rl_common::expandTransitions(model.view()->query({3.0f}, 1));
+  ASSERT_EQ(next.size(), 1u);
+  EXPECT_EQ(next[0].first, State{4.0f});
 }
 
 TEST(FactoredModel, IndependentProductOverFeatures) {
@@ -115,13 +116,18 @@ TEST(FactoredModel, IndependentProductOverFeatures) {
   }
   model.update(data);
   const auto info = model.view()->query({0.0f, 0.0f}, 0);
-  ASSERT_EQ(info.transitions.size(), 4u);
+  ASSERT_EQ(info.factored.size(), 2u);  // one distribution per feature
+  EXPECT_TRUE(info.transitions.empty());
+  const auto next = rl_common::expandTransitions(info);
+  ASSERT_EQ(next.size(), 4u);
   double total = 0;
-  for (const auto& [s, p] : info.transitions) {
+  for (const auto& [s, p] : next) {
     EXPECT_NEAR(p, 0.25, 1e-9);
+    EXPECT_NEAR(rl_common::transitionProbability(info, s), 0.25, 1e-9);
     total += p;
   }
   EXPECT_NEAR(total, 1.0, 1e-12);
+  EXPECT_DOUBLE_EQ(rl_common::transitionProbability(info, {0.5f, 0.0f}), 0.0);
   EXPECT_FLOAT_EQ(info.termProb, 0.0f);  // non-episodic
 }
 

@@ -30,7 +30,7 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
                   "model type");
   p.choice("explore", &o->explore,
            {"unknown", "greedy", "epsilongreedy", "unvisitedstates", "unvisitedactions",
-            "variancenovelty"},
+            "variancenovelty", "random", "competence", "prederror", "boltzmann"},
            "exploration type");
   p.aliasedChoice("combo|modelcombo", &o->combo,
                   {{"average", "average"},
@@ -68,6 +68,7 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
           "UCT rollouts per step, planned synchronously for reproducible runs (0: plan in real "
           "time at --actrate)",
           atLeast(0L));
+  p.value("tau", &o->tau, "Boltzmann temperature (--explore boltzmann)", greaterThan(0.0f));
 }
 
 namespace {
@@ -112,6 +113,9 @@ void applyAgentDefaults(const rl_common::OptionParser& p, AgentOptions* o) {
     setIfUnset("explore", &o->explore,
                std::string(o->v != 0.0f || o->n != 0.0f ? "variancenovelty" : "greedy"));
   }
+  if ((o->explore == "competence" || o->explore == "prederror") && !p.given("v") && !p.given("b")) {
+    o->v = 1.0f;  // the region bonus's weight
+  }
 }
 
 void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) {
@@ -125,7 +129,7 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
   lambdaAgents.push_back("sarsa");
   requireAgent(p, o, "lambda", lambdaAgents);
   for (const char* option : {"actrate", "m", "model", "planner", "combo", "nmodels", "reltrans",
-                             "abstrans", "v", "n", "history", "rollouts"}) {
+                             "abstrans", "v", "n", "history", "rollouts", "tau"}) {
     requireAgent(p, o, option, kModelBased);
   }
   const bool modelBased = isOneOf(o.agent, kModelBased);
@@ -143,8 +147,32 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
       throw rl_common::OptionError(
           "option --epsilon applies to model-based agents only with --explore epsilongreedy");
     }
-    if ((p.given("v") || p.given("b")) && o.explore != "variancenovelty") {
-      throw rl_common::OptionError("option --v needs --explore variancenovelty");
+    if ((p.given("v") || p.given("b")) && o.explore != "variancenovelty" &&
+        o.explore != "competence" && o.explore != "prederror") {
+      throw rl_common::OptionError(
+          "option --v needs --explore variancenovelty, competence or prederror");
+    }
+    if (p.given("tau") && o.explore != "boltzmann") {
+      throw rl_common::OptionError("option --tau needs --explore boltzmann");
+    }
+    const std::vector<std::string> selectionOnly = {"greedy", "epsilongreedy", "random",
+                                                    "boltzmann"};
+    if (o.model == "tabular" && !isOneOf(o.explore, selectionOnly) && o.explore != "unknown") {
+      throw rl_common::OptionError("option --explore " + o.explore +
+                                   " is not available with --model tabular; valid: " +
+                                   rl_common::joinNames(selectionOnly) + ", unknown");
+    }
+    if (o.model == "m5tree" && !isOneOf(o.explore, selectionOnly)) {
+      throw rl_common::OptionError(
+          "option --explore " + o.explore +
+          " is not available with --model m5tree; valid: " + rl_common::joinNames(selectionOnly));
+    }
+    if (o.model == "m5tree" && !searchPlanner && o.nstates <= 0) {
+      throw rl_common::OptionError("--model m5tree with --planner " + o.planner +
+                                   " needs --nstates > 0 (the planner's state grid)");
+    }
+    if (o.agent == "rmax" && o.explore != "unknown") {
+      throw rl_common::OptionError("--agent rmax needs --explore unknown");
     }
     if (p.given("n") && o.explore != "variancenovelty" && o.explore != "unvisitedstates" &&
         o.explore != "unvisitedactions") {

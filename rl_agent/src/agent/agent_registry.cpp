@@ -1,7 +1,14 @@
 #include "rl_agent/agent/agent_registry.h"
 
+#include <stdexcept>
+
+#include "rl_agent/agent/discretization_agent.h"
+#include "rl_agent/agent/dyna.h"
 #include "rl_agent/agent/model_based_agent.h"
+#include "rl_agent/agent/optimal_agent.h"
 #include "rl_agent/agent/q_learner.h"
+#include "rl_agent/agent/sarsa.h"
+#include "rl_agent/agent/saved_policy.h"
 
 namespace rl_agent {
 
@@ -21,6 +28,33 @@ AgentRegistry buildRegistry() {
         return std::make_unique<QLearner>(c, o.seed);
       },
       "tabular Q-learning, epsilon-greedy (Watkins & Dayan 1992)");
+  reg.add(
+      "sarsa",
+      [](const AgentOptions& o, const rl_common::EnvironmentDescription& d) {
+        Sarsa::Config c;
+        c.numActions = d.numActions;
+        c.gamma = o.gamma;
+        c.initialValue = o.initialvalue;
+        c.alpha = o.alpha;
+        c.epsilon = o.epsilon;
+        c.lambda = o.lambda;
+        return std::make_unique<Sarsa>(c, o.seed);
+      },
+      "tabular Sarsa(lambda), replacing traces decaying by gamma*lambda (Rummery & Niranjan "
+      "1994; Sutton & Barto 2018)");
+  reg.add(
+      "dyna",
+      [](const AgentOptions& o, const rl_common::EnvironmentDescription& d) {
+        Dyna::Config c;
+        c.numActions = d.numActions;
+        c.gamma = o.gamma;
+        c.initialValue = o.initialvalue;
+        c.alpha = o.alpha;
+        c.epsilon = o.epsilon;
+        c.k = o.k;
+        return std::make_unique<Dyna>(c, o.seed);
+      },
+      "Dyna-Q: Q-learning plus --k replayed updates per step (Sutton 1990)");
   const auto modelBased = [](const AgentOptions& o, const rl_common::EnvironmentDescription& d) {
     return std::make_unique<ModelBasedAgent>(o, d);
   };
@@ -28,7 +62,39 @@ AgentRegistry buildRegistry() {
           "TEXPLORE: random-forest model, UCT(lambda) in real time; with --v/--n "
           "TEXPLORE-VANIR (Hester & Stone 2013, 2017)");
   reg.add("modelbased", modelBased, "model-based agent with the chosen --model and --planner");
+  reg.add("rmax", modelBased,
+          "R-MAX: tabular model, optimistic for state-actions seen fewer than --m times, value "
+          "iteration (Brafman & Tennenholtz 2002)");
+  reg.add(
+      "savedpolicy",
+      [](const AgentOptions& o, const rl_common::EnvironmentDescription& d) {
+        return std::make_unique<SavedPolicy>(d.numActions, static_cast<int>(d.numFeatures()),
+                                             o.filename, o.seed);
+      },
+      "greedy on the Q-values of a policy file (--filename)");
+  reg.add(
+      "optimal",
+      [](const AgentOptions&,
+         const rl_common::EnvironmentDescription&) -> std::unique_ptr<rl_common::Agent> {
+        throw std::invalid_argument(
+            "makeAgent(): agent 'optimal' plans on the environment's true model: it is "
+            "available where the environment is in the same process (the experiment runner), "
+            "for environments with a true model (lightworld, taxi, tworooms, fourrooms)");
+      },
+      "value iteration on the environment's true model (the paper's optimal policy)");
   return reg;
+}
+
+std::unique_ptr<rl_common::Agent> wrap(std::unique_ptr<rl_common::Agent> agent,
+                                       const AgentOptions& o,
+                                       const rl_common::EnvironmentDescription& d) {
+  // Model-free agents and savedpolicy see binned states (the original's DiscretizationAgent);
+  // the model-based agent bins its own inputs (except for m5tree).
+  const bool modelFree =
+      o.agent == "qlearner" || o.agent == "sarsa" || o.agent == "dyna" || o.agent == "savedpolicy";
+  if (o.nstates <= 0 || !modelFree) return agent;
+  return std::make_unique<DiscretizationAgent>(std::move(agent), std::vector<int>{o.nstates},
+                                               d.minFeatures, d.maxFeatures);
 }
 
 }  // namespace
@@ -40,7 +106,24 @@ const AgentRegistry& agentRegistry() {
 
 std::unique_ptr<rl_common::Agent> makeAgent(const AgentOptions& options,
                                             const rl_common::EnvironmentDescription& description) {
-  return agentRegistry().create(options.agent, options, description);
+  return wrap(agentRegistry().create(options.agent, options, description), options, description);
+}
+
+std::unique_ptr<rl_common::Agent> makeAgent(const AgentOptions& options,
+                                            const rl_common::EnvironmentDescription& description,
+                                            const rl_common::TrueModel* trueModel) {
+  if (agentRegistry().canonical(options.agent) != "optimal") {
+    return makeAgent(options, description);
+  }
+  if (trueModel == nullptr) {
+    throw std::invalid_argument(
+        "makeAgent(): agent 'optimal' needs the environment's true model, and this "
+        "environment offers none (valid: lightworld, taxi, tworooms, fourrooms)");
+  }
+  OptimalAgent::Config c;
+  c.numActions = description.numActions;
+  c.gamma = options.gamma;
+  return std::make_unique<OptimalAgent>(c, *trueModel, options.seed);
 }
 
 }  // namespace rl_agent

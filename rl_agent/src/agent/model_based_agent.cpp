@@ -4,6 +4,12 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "rl_agent/agent/boltzmann_selector.h"
+#include "rl_agent/agent/policy_file.h"
+#include "rl_agent/model/m5_model.h"
+#include "rl_agent/planner/policy_iteration.h"
+#include "rl_agent/planner/prioritized_sweeping.h"
+#include "rl_agent/planner/value_iteration.h"
 #include "rl_agent/reward/explorer_registry.h"
 
 namespace rl_agent {
@@ -12,12 +18,23 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+bool isUct(const std::string& planner) {
+  return planner == "uct" || planner == "parallel-uct" || planner == "delayed-uct" ||
+         planner == "delayed-parallel-uct";
+}
+
+/// Explorers that only change how actions are chosen (no bonus): every model serves them.
+bool selectionOnly(const std::string& explore) {
+  return explore == "greedy" || explore == "epsilongreedy" || explore == "random" ||
+         explore == "boltzmann";
+}
+
+bool isRealTimeUct(const std::string& planner) {
+  return planner == "parallel-uct" || planner == "delayed-parallel-uct";
+}
+
 FactoredModel::Config modelConfig(const AgentOptions& o,
                                   const rl_common::EnvironmentDescription& t) {
-  if (o.model != "tree") {
-    throw std::invalid_argument("ModelBasedAgent::ModelBasedAgent(): model '" + o.model +
-                                "' is not available to texplore/modelbased yet; use --model tree");
-  }
   FactoredModel::Config c;
   c.numActions = t.numActions;
   c.featMin = t.minFeatures;
@@ -34,10 +51,6 @@ FactoredModel::Config modelConfig(const AgentOptions& o,
 
 UctPlanner::Config plannerConfig(const AgentOptions& o,
                                  const rl_common::EnvironmentDescription& t) {
-  if (o.planner != "uct" && o.planner != "parallel-uct") {
-    throw std::invalid_argument("ModelBasedAgent::ModelBasedAgent(): planner '" + o.planner +
-                                "' is not available yet; use uct or parallel-uct");
-  }
   UctPlanner::Config c;
   c.numActions = t.numActions;
   c.gamma = o.gamma;
@@ -49,6 +62,29 @@ UctPlanner::Config plannerConfig(const AgentOptions& o,
   c.history = o.history;
   c.trackActual = true;
   return c;
+}
+
+std::unique_ptr<StateSpacePlanner> dpPlanner(const AgentOptions& o,
+                                             const rl_common::EnvironmentDescription& t,
+                                             std::uint64_t seed) {
+  StateSpacePlanner::Config c;
+  c.numActions = t.numActions;
+  c.gamma = std::min(static_cast<double>(o.gamma), 0.999999);
+  if (o.nstates > 0) {  // the planner's grid, as the original's planners' statesPerDim
+    c.featMin = t.minFeatures;
+    c.featMax = t.maxFeatures;
+    c.statesPerDim = o.nstates;
+  }
+  if (o.planner == "vi") {
+    c.maxSteps = 100;  // the original's ValueIteration MAX_STEPS
+    return std::make_unique<ValueIteration>(c, seed);
+  }
+  c.maxSteps = 10;  // the original's PolicyIteration / PrioritizedSweeping MAX_STEPS
+  if (o.planner == "pi") return std::make_unique<PolicyIteration>(c, seed);
+  if (o.planner == "sweeping") return std::make_unique<PrioritizedSweeping>(c, seed);
+  throw std::invalid_argument("ModelBasedAgent::ModelBasedAgent(): unknown planner '" + o.planner +
+                              "'; valid: vi, pi, sweeping, uct, parallel-uct, delayed-uct, "
+                              "delayed-parallel-uct");
 }
 
 }  // namespace
@@ -65,18 +101,93 @@ ModelBasedAgent::ModelBasedAgent(const AgentOptions& options,
   settings.v = options.v;
   settings.n = options.n;
   settings.m = options.m;
+  settings.tau = options.tau;
+  settings.featMin = task.minFeatures;
+  settings.featMax = task.maxFeatures;
+  settings.seed = rl_common::Random::deriveSeed(options.seed, "regions");
   const float rmax = task.maxReward > 0.0f ? task.maxReward : 1.0f;
   settings.rmax = rmax / (1.0f - std::min(options.gamma, 0.999f));  // the original's qmax
   const auto explorer = explorerRegistry().create(options.explore, settings);
   epsilonGreedy_ = explorer->epsilonGreedy;
-  auto model = std::make_unique<ExplorationModel>(
-      modelConfig(options, task), rl_common::Random::deriveSeed(options.seed, "model"),
-      explorer->rewards);
-  auto planner = std::make_unique<UctPlanner>(
-      plannerConfig(options, task), rl_common::Random::deriveSeed(options.seed, "planner"));
+  randomActions_ = explorer->randomActions;
+  boltzmann_ = explorer->boltzmann;
+  tau_ = explorer->tau;
+
+  if (options.nstates > 0 && options.model != "m5tree") {
+    binFactor_.resize(task.minFeatures.size());
+    for (std::size_t j = 0; j < binFactor_.size(); ++j) {
+      binFactor_[j] =
+          (task.maxFeatures[j] - task.minFeatures[j]) / static_cast<float>(options.nstates);
+    }
+  }
+
+  // The model.
+  std::unique_ptr<rl_common::MDPModel> model;
+  const auto reject = [&](const char* modelName) {
+    throw std::invalid_argument("ModelBasedAgent::ModelBasedAgent(): --explore " + options.explore +
+                                " is not available with --model " + modelName);
+  };
+  if (options.model == "tree") {
+    auto m = std::make_unique<ExplorationModel>(
+        modelConfig(options, task), rl_common::Random::deriveSeed(options.seed, "model"),
+        explorer->rewards, explorer->learners);
+    exploration_ = m.get();
+    model = std::move(m);
+  } else if (options.model == "tabular") {
+    const bool unknown = options.explore == "unknown";
+    if (!selectionOnly(options.explore) && !unknown) reject("tabular");
+    TabularModel::Config c;
+    c.numActions = task.numActions;
+    c.numFeatures = static_cast<int>(task.minFeatures.size());
+    c.m = options.m;
+    c.optimistic = unknown;
+    c.rmax = settings.rmax;
+    auto m = std::make_unique<TabularModel>(c);
+    tabular_ = m.get();
+    model = std::move(m);
+  } else if (options.model == "m5tree") {
+    if (!selectionOnly(options.explore)) reject("m5tree");
+    if (!isUct(options.planner) && options.nstates <= 0) {
+      throw std::invalid_argument(
+          "ModelBasedAgent::ModelBasedAgent(): --model m5tree with --planner " + options.planner +
+          " needs --nstates > 0 (the planner's state grid)");
+    }
+    M5Model::Config c;
+    c.numActions = task.numActions;
+    c.featMin = task.minFeatures;
+    c.featMax = task.maxFeatures;
+    c.extraInputs = options.history * task.numActions;
+    c.relativeTransitions = options.reltrans;
+    c.episodic = task.episodic;
+    c.rewardRange = std::max(task.rewardRange(), 1e-6f);
+    model = std::make_unique<M5Model>(c);
+  } else {
+    throw std::invalid_argument("ModelBasedAgent::ModelBasedAgent(): unknown model '" +
+                                options.model + "'; valid: tabular, tree, m5tree");
+  }
   modelPtr_ = model.get();
+
+  // The planner.
+  const std::uint64_t plannerSeed = rl_common::Random::deriveSeed(options.seed, "planner");
+  std::unique_ptr<rl_common::Planner> planner;
+  if (isUct(options.planner)) {
+    auto p = std::make_unique<UctPlanner>(plannerConfig(options, task), plannerSeed);
+    uct_ = p.get();
+    planner = std::move(p);
+  } else {
+    if (options.history > 0) {
+      throw std::invalid_argument(
+          "ModelBasedAgent::ModelBasedAgent(): --history needs a UCT "
+          "planner, not '" +
+          options.planner + "'");
+    }
+    auto p = dpPlanner(options, task, plannerSeed);
+    dp_ = p.get();
+    planner = std::move(p);
+  }
   history_.clear();
-  if (options.planner == "parallel-uct" && options.rollouts == 0) {
+  if (isRealTimeUct(options.planner) && options.rollouts == 0) {
+    uct_ = nullptr;  // owned and serialised by realTime_ from now on
     realTime_ = std::make_unique<RealTimePlanner>(std::move(model), std::move(planner));
   } else {
     planner->setModel(model->view());
@@ -95,6 +206,19 @@ ModelBasedAgent::~ModelBasedAgent() {
   }
 }
 
+rl_common::State ModelBasedAgent::binned(const rl_common::State& s) const {
+  if (binFactor_.empty()) return s;
+  rl_common::State out(s);
+  for (std::size_t j = 0; j < binFactor_.size() && j < s.size(); ++j) {
+    const float f = binFactor_[j];
+    if (f <= 0.0f) continue;
+    const int bin = s[j] > 0.0f ? static_cast<int>((s[j] + f / 2.0f) / f)
+                                : static_cast<int>((s[j] - f / 2.0f) / f);
+    out[j] = f * static_cast<float>(bin);
+  }
+  return out;
+}
+
 rl_common::State ModelBasedAgent::modelInput(const rl_common::State& s) {
   if (options_.history == 0) return s;
   if (realTime_) {
@@ -104,16 +228,18 @@ rl_common::State ModelBasedAgent::modelInput(const rl_common::State& s) {
       return uct.modelInput(s);
     });
   }
-  planner_->setActionHistory(history_);
-  return planner_->modelInput(s);
+  uct_->setActionHistory(history_);
+  return uct_->modelInput(s);
 }
 
 void ModelBasedAgent::learn(const rl_common::Experience& e) {
   if (realTime_) {
     realTime_->addExperience(e);
   } else {
+    const auto start = Clock::now();
     model_->update({e});
     planner_->setModel(model_->view());  // novelty changes with every experience
+    lastLearnSeconds_ = std::chrono::duration<double>(Clock::now() - start).count();
   }
 }
 
@@ -121,6 +247,8 @@ void ModelBasedAgent::seedExperiences(const std::vector<rl_common::Experience>& 
   std::vector<rl_common::Experience> inputs;
   for (const auto& seed : seeds) {
     rl_common::Experience e = seed;
+    e.s = binned(e.s);
+    e.next = binned(e.next);
     // Seeds carry no action history: "none" for every past action.
     e.s.resize(e.s.size() + static_cast<std::size_t>(options_.history * task_.numActions), 0.0f);
     inputs.push_back(std::move(e));
@@ -133,14 +261,34 @@ void ModelBasedAgent::seedExperiences(const std::vector<rl_common::Experience>& 
   }
 }
 
-int ModelBasedAgent::chooseAction(const rl_common::State& s) {
+std::vector<double> ModelBasedAgent::plannerValues(const rl_common::State& s) {
+  if (realTime_) {
+    return realTime_->withPlanner(
+        [&](rl_common::Planner& p) { return static_cast<UctPlanner&>(p).qValues(s); });
+  }
+  if (uct_ != nullptr) return uct_->qValues(s);
+  return dp_->qValues(s);
+}
+
+int ModelBasedAgent::chooseAction(const rl_common::State& raw) {
   const auto due = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                       std::chrono::duration<double>(1.0 / options_.actrate));
+  const rl_common::State s = binned(raw);
   const rl_common::State input = modelInput(s);
+  const auto planStart = Clock::now();
   int action;
   if (realTime_) {
     action = realTime_->act(s, due);
     lastRollouts_ = realTime_->lastActRollouts();
+  } else if (randomActions_) {
+    action = 0;  // replaced below; no planning needed
+    lastRollouts_ = 0;
+  } else if (dp_ != nullptr) {
+    const auto budget = options_.rollouts > 0
+                            ? rl_common::PlanningBudget::ofRollouts(options_.rollouts)
+                            : rl_common::PlanningBudget{};
+    lastRollouts_ = planner_->plan(s, budget);
+    action = planner_->bestAction(s);
   } else {
     const auto budget = options_.rollouts > 0
                             ? rl_common::PlanningBudget::ofRollouts(options_.rollouts)
@@ -148,11 +296,19 @@ int ModelBasedAgent::chooseAction(const rl_common::State& s) {
     lastRollouts_ = planner_->plan(s, budget);
     action = planner_->bestAction(s);
   }
-  if (epsilonGreedy_ && rng_.bernoulli(options_.epsilon)) {
+  lastPlanSeconds_ = std::chrono::duration<double>(Clock::now() - planStart).count();
+  if (randomActions_) {
+    action = rng_.uniformInt(0, task_.numActions - 1);
+  } else if (boltzmann_) {
+    const std::vector<double> q = plannerValues(s);
+    if (static_cast<int>(q.size()) == task_.numActions) {
+      action = BoltzmannSelector::sample(q, tau_, rng_);
+    }
+  } else if (epsilonGreedy_ && rng_.bernoulli(options_.epsilon)) {
     action = rng_.uniformInt(0, task_.numActions - 1);
   }
   // What the model predicts the chosen action earns, part by part.
-  const auto info = modelView()->query(input, action);
+  const auto info = currentView()->query(input, action);
   lastBreakdown_ = {info.varianceReward, info.noveltyReward, info.otherReward};
   lastInput_ = input;
   lastAction_ = action;
@@ -172,7 +328,7 @@ int ModelBasedAgent::nextAction(float reward, const rl_common::State& s) {
   if (lastAction_ < 0) {
     throw std::logic_error("ModelBasedAgent::nextAction(): called before firstAction()");
   }
-  learn({lastInput_, lastAction_, reward, s, false});
+  learn({lastInput_, lastAction_, reward, binned(s), false});
   return chooseAction(s);
 }
 
@@ -186,21 +342,44 @@ void ModelBasedAgent::lastAction(float reward) {
 }
 
 void ModelBasedAgent::setIntrinsicEnabled(bool enabled) {
-  // In real time the model thread reads this (atomic) flag when it takes its next view, after
-  // the next experience.
-  if (realTime_) {
-    modelPtr_->setIntrinsicEnabled(enabled);
-  } else {
-    model_->setIntrinsicEnabled(enabled);
-    planner_->setModel(model_->view());
-  }
+  // In real time the model thread reads these (atomic) flags when it takes its next view,
+  // after the next experience.
+  if (exploration_ != nullptr) exploration_->setIntrinsicEnabled(enabled);
+  if (tabular_ != nullptr) tabular_->setOptimistic(enabled);
+  if (!realTime_) planner_->setModel(model_->view());
+}
+
+std::shared_ptr<const rl_common::ModelView> ModelBasedAgent::currentView() const {
+  if (realTime_) return realTime_->latestView();
+  return model_->view();
 }
 
 std::shared_ptr<const ExplorationModel::View> ModelBasedAgent::modelView() const {
+  if (exploration_ == nullptr) return nullptr;
   if (realTime_) {
     return std::static_pointer_cast<const ExplorationModel::View>(realTime_->latestView());
   }
-  return model_->explorationView();
+  return exploration_->explorationView();
+}
+
+std::shared_ptr<const rl_common::ModelView> ModelBasedAgent::learnedModelView() const {
+  if (exploration_ != nullptr) {
+    const auto view = modelView();
+    return std::shared_ptr<const rl_common::ModelView>(view, &view->model());
+  }
+  // Tabular and M5 views: the optimism of R-MAX changes reward and termination only.
+  return currentView();
+}
+
+void ModelBasedAgent::savePolicy(const std::string& filename) {
+  if (dp_ == nullptr || filename.empty()) return;
+  PolicyFile::Table table;
+  for (const auto& s : dp_->expandedStates()) {
+    if (s.size() != task_.minFeatures.size()) continue;
+    const std::vector<double> q = dp_->qValues(s);
+    table.emplace(s, std::vector<float>(q.begin(), q.end()));
+  }
+  PolicyFile::write(filename, static_cast<int>(task_.minFeatures.size()), task_.numActions, table);
 }
 
 }  // namespace rl_agent

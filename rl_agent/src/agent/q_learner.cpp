@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "rl_agent/agent/policy_file.h"
+
 namespace rl_agent {
 
 namespace {
@@ -92,6 +94,15 @@ void QLearner::seedExperiences(const std::vector<rl_common::Experience>& seeds) 
     }
     update(e.s, e.action, e.reward, e.terminal ? nullptr : &e.next);
   }
+}
+
+void QLearner::savePolicy(const std::string& filename) {
+  const int d = q_.empty() ? 0 : static_cast<int>(q_.begin()->first.size());
+  PolicyFile::Table table;
+  for (const auto& [s, values] : q_) {
+    if (static_cast<int>(s.size()) == d) table.emplace(s, values);
+  }
+  PolicyFile::write(filename, d, config_.numActions, table);
 }
 
 }  // namespace rl_agent

@@ -3,12 +3,20 @@
 namespace rl_agent {
 
 ExplorationModel::ExplorationModel(const FactoredModel::Config& config, std::uint64_t seed,
-                                   Rewards rewards)
+                                   Rewards rewards, Learners learners)
     : model_(config, seed),
       visited_(config.numActions, config.featMin, config.featMax),
-      rewards_(std::make_shared<const Rewards>(std::move(rewards))) {}
+      rewards_(std::make_shared<const Rewards>(std::move(rewards))),
+      learners_(std::move(learners)) {}
 
 bool ExplorationModel::update(const std::vector<rl_common::Experience>& experiences) {
+  if (!learners_.empty() && !experiences.empty()) {
+    const auto before = model_.factoredView();
+    for (const auto& e : experiences) {
+      const rl_common::StateActionInfo predicted = before->query(e.s, e.action);
+      for (const auto& l : learners_) l->observe(e, predicted);
+    }
+  }
   const bool changed = model_.update(experiences);  // validates the experiences first
   for (const auto& e : experiences) visited_.add(e.s, e.action);
   return changed || !experiences.empty();  // novelty changes with every experience
@@ -18,7 +26,13 @@ std::shared_ptr<const ExplorationModel::View> ExplorationModel::explorationView(
   auto v = std::make_shared<View>();
   v->model_ = model_.factoredView();
   v->visited_ = visited_.snapshot();
-  if (enabled_ && !rewards_->empty()) v->rewards_ = rewards_;
+  if (enabled_ && !learners_.empty()) {
+    auto all = std::make_shared<Rewards>(*rewards_);
+    for (const auto& l : learners_) all->push_back(l->snapshot());
+    v->rewards_ = std::move(all);
+  } else if (enabled_ && !rewards_->empty()) {
+    v->rewards_ = rewards_;
+  }
   return v;
 }
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -10,7 +9,6 @@ namespace rl_agent {
 
 namespace {
 
-constexpr double kMinOutcomeProb = 1e-6;  // combinations below this are pruned
 constexpr float kUnknownReward = -0.001f;
 
 RandomForest makeForest(const FactoredModel::Config& c, std::uint64_t seed, const char* stream,
@@ -117,37 +115,17 @@ rl_common::StateActionInfo FactoredModel::View::query(const rl_common::State& in
     info.known = false;
     return info;
   }
-  // Independent product of the per-feature distributions, depth-first with
-  // pruning.
-  std::vector<std::pair<rl_common::State, double>> partial{{rl_common::State(), 1.0}};
+  // One distribution per feature; their independent product is the next-state distribution
+  // (never expanded here: with 17 features it can have millions of outcomes).
+  info.factored.resize(d);
   for (std::size_t j = 0; j < d; ++j) {
     const Distribution dist = features_[j].predict(x);
-    std::vector<std::pair<rl_common::State, double>> next;
-    next.reserve(partial.size() * std::max<std::size_t>(1, dist.size()));
-    std::pair<rl_common::State, double> best{rl_common::State(), -1.0};
-    for (const auto& [prefix, p] : partial) {
-      for (const auto& [value, q] : dist) {
-        const float v = config_->relativeTransitions ? current[j] + value : value;
-        if (p * q < kMinOutcomeProb) {
-          if (p * q > best.second) {
-            best = {prefix, p * q};
-            best.first.push_back(v);
-          }
-          continue;
-        }
-        rl_common::State s = prefix;
-        s.push_back(v);
-        next.emplace_back(std::move(s), p * q);
-      }
+    auto& out = info.factored[j];
+    out.reserve(dist.size());
+    for (const auto& [value, p] : dist) {
+      out.emplace_back(config_->relativeTransitions ? current[j] + value : value, p);
     }
-    if (next.empty()) next.push_back(std::move(best));  // keep the most probable outcome
-    partial = std::move(next);
   }
-  double total = 0.0;
-  for (const auto& o : partial) total += o.second;
-  std::map<rl_common::State, double> merged;
-  for (auto& [s, p] : partial) merged[s] += p / total;
-  info.transitions.assign(merged.begin(), merged.end());
   info.reward = info.externalReward = static_cast<float>(expectation(reward_.predict(x)));
   if (config_->episodic) {
     double t = 0.0;

@@ -265,6 +265,35 @@ void UctPlanner::rollout(const State& root) {
 void UctPlanner::sampleSuccessor(const StateActionInfo& info) {
   const auto& tr = info.transitions;
   const std::size_t n = actual_.size();
+  if (!info.factored.empty()) {
+    // Factored prediction: sample each feature from its own distribution.
+    if (info.factored.size() < n) {
+      throw std::runtime_error("UctPlanner::plan(): the model predicted " +
+                               std::to_string(info.factored.size()) +
+                               " feature distributions for a state of " + std::to_string(n));
+    }
+    next_.resize(n);
+    for (std::size_t j = 0; j < n; ++j) {
+      const auto& dist = info.factored[j];
+      float value = actual_[j];  // an empty distribution keeps the feature
+      if (dist.size() == 1) {
+        value = dist.front().first;
+      } else if (!dist.empty()) {
+        double u = rng_.uniform();
+        for (const auto& [v, p] : dist) {
+          value = v;
+          u -= p;
+          if (u < 0.0) break;
+        }
+      }
+      next_[j] = value;
+    }
+    if (config_.trackActual && discretising_) {
+      for (std::size_t j = 0; j < n; ++j) next_[j] = actual_[j] + (next_[j] - key_[j]);
+    }
+    if (!inRange(next_)) next_ = actual_;
+    return;
+  }
   const State* chosen = nullptr;
   if (tr.size() == 1) {
     chosen = &tr.front().first;

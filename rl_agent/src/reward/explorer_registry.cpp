@@ -1,6 +1,10 @@
 #include "rl_agent/reward/explorer_registry.h"
 
+#include <stdexcept>
+
 #include "rl_agent/reward/novelty_reward.h"
+#include "rl_agent/reward/random_regions.h"
+#include "rl_agent/reward/region_error_reward.h"
 #include "rl_agent/reward/unknown_reward.h"
 #include "rl_agent/reward/unvisited_action_reward.h"
 #include "rl_agent/reward/unvisited_state_reward.h"
@@ -56,6 +60,41 @@ ExplorerRegistry build() {
         return e;
       },
       "bonus n for untried state-actions");
+  reg.add(
+      "random",
+      [](const ExplorerSettings&) {
+        auto e = std::make_unique<Explorer>();
+        e->randomActions = true;
+        return e;
+      },
+      "uniformly random actions (the paper's random agent)");
+  reg.add(
+      "boltzmann",
+      [](const ExplorerSettings& s) {
+        if (!(s.tau > 0.0f))
+          throw std::invalid_argument("explorerRegistry(): boltzmann needs tau > 0");
+        auto e = std::make_unique<Explorer>();
+        e->boltzmann = true;
+        e->tau = s.tau;
+        return e;
+      },
+      "softmax action selection with temperature tau");
+  const auto regionExplorer = [](RegionErrorReward::Kind kind) {
+    return [kind](const ExplorerSettings& s) {
+      auto regions = std::make_shared<const RandomRegions>(s.featMin, s.featMax, s.regions, s.seed);
+      RegionErrorReward::Config c;
+      c.kind = kind;
+      c.weight = s.v;
+      c.window = s.window;
+      auto e = std::make_unique<Explorer>();
+      e->learners.push_back(std::make_shared<RegionErrorReward>(c, std::move(regions)));
+      return e;
+    };
+  };
+  reg.add("competence", regionExplorer(RegionErrorReward::Kind::CompetenceProgress),
+          "R-IAC-style competence progress in random regions (weight v)");
+  reg.add("prederror", regionExplorer(RegionErrorReward::Kind::PredictionError),
+          "prediction error in random regions (weight v)");
   return reg;
 }
 

@@ -25,12 +25,14 @@ bool waitFor(const std::function<bool()>& done, double seconds) {
 
 TEST(AgentEnv, EpisodesCompleteAndBadMessagesAreDropped) {
   ros::NodeHandle nh;
+  int numActions = 6;
+  ros::NodeHandle("~").param("num_actions", numActions, numActions);
   int actions = 0, infos = 0, breakdowns = 0;
   int lastEpisode = -1;
   auto a = nh.subscribe<rl_msgs::RLAction>("rl_agent/rl_action", 100,
                                            [&](const rl_msgs::RLAction::ConstPtr& m) {
                                              EXPECT_GE(m->action, 0);
-                                             EXPECT_LT(m->action, 6);  // taxi
+                                             EXPECT_LT(m->action, numActions);
                                              ++actions;
                                            });
   auto i = nh.subscribe<rl_msgs::RLExperimentInfo>(

@@ -34,6 +34,7 @@ struct AgentOptions {
   int k = 1000;          ///< Dyna model updates per step
   std::string filename;  ///< policy file (savedpolicy reads it; others write it at shutdown)
   long rollouts = 0;     ///< UCT rollouts per step, synchronously (0: real time at actrate)
+  float tau = 0.2f;      ///< Boltzmann temperature (--explore boltzmann; 0.2 in the paper)
 };
 
 /// Declares every agent option but --seed on `parser`, writing into `options`. Programs declare
@@ -45,13 +46,16 @@ void addAgentOptions(rl_common::OptionParser& parser, AgentOptions* options);
 /// overrides, ORIGINAL.md §3.1): rmax plans with value iteration on a tabular model and
 /// explores unknown state-actions; texplore uses 5-tree forests averaged, relative
 /// transitions, the real-time UCT planner, and variance-novelty exploration when --v or --n is
-/// given (greedy otherwise).
+/// given (greedy otherwise). The competence and prederror explorers weigh their bonus with
+/// --v, 1 unless given.
 void applyAgentDefaults(const rl_common::OptionParser& parser, AgentOptions* options);
 
 /// The original's option rules without its bugs: options apply only to the agents that use
 /// them (e.g. --alpha for qlearner, sarsa, dyna; --v for the model-based agents); --epsilon is
 /// accepted by every agent that acts epsilon-greedily; --combo other than best needs more than
-/// one tree; rmax needs a tabular model. Throws rl_common::OptionError naming the option and
+/// one tree; rmax needs a tabular model and --explore unknown; --tau needs --explore boltzmann;
+/// the tabular model takes the explorers greedy, epsilongreedy, random, boltzmann and unknown,
+/// the m5tree model the first four. Throws rl_common::OptionError naming the option and
 /// where it applies.
 void checkAgentOptions(const rl_common::OptionParser& parser, const AgentOptions& options);
 

@@ -1,5 +1,8 @@
 /**
- * The agent registry: every agent of the suite under the original's --agent names.
+ * The agent registry: every agent of the suite under the original's --agent names, plus
+ * `optimal` (value iteration on the environment's true model; built only through the
+ * makeAgent overload that receives that model). With --nstates > 0 the model-free agents and
+ * savedpolicy are wrapped in a DiscretizationAgent, as in the original.
  */
 #pragma once
 
@@ -9,6 +12,7 @@
 #include "rl_common/agent.h"
 #include "rl_common/environment.h"
 #include "rl_common/registry.h"
+#include "rl_common/true_model.h"
 
 namespace rl_agent {
 
@@ -22,5 +26,13 @@ const AgentRegistry& agentRegistry();
 /// valid names if the name is unknown.
 std::unique_ptr<rl_common::Agent> makeAgent(const AgentOptions& options,
                                             const rl_common::EnvironmentDescription& description);
+
+/// Same, with access to the environment's exact dynamics for the `optimal` agent (every other
+/// agent ignores `trueModel`). The runner passes
+/// `dynamic_cast<const rl_common::TrueModel*>(env.get())`; the environment must outlive the
+/// agent. Throws std::invalid_argument if `optimal` is asked for and `trueModel` is null.
+std::unique_ptr<rl_common::Agent> makeAgent(const AgentOptions& options,
+                                            const rl_common::EnvironmentDescription& description,
+                                            const rl_common::TrueModel* trueModel);
 
 }  // namespace rl_agent

@@ -1,21 +1,37 @@
 /**
- * ModelBasedAgent: TEXPLORE and TEXPLORE-VANIR (`--agent texplore [--v V --n N]`) and the
- * original's `modelbased` agent.
+ * ModelBasedAgent: TEXPLORE and TEXPLORE-VANIR (`--agent texplore [--v V --n N]`), R-MAX
+ * (`--agent rmax`) and the original's `modelbased` agent with any model and planner.
  *
  * Hester & Stone, "TEXPLORE: real-time sample-efficient reinforcement learning for robots",
  * Machine Learning 90(3), 2013; Hester & Stone, "Intrinsically motivated model learning for
- * developing curious robots", Artificial Intelligence 247, 2017 (TEXPLORE-VANIR).
+ * developing curious robots", Artificial Intelligence 247, 2017 (TEXPLORE-VANIR); Brafman &
+ * Tennenholtz, "R-MAX", JMLR 3, 2002.
  *
- * The agent learns an ExplorationModel (random forests per feature, reward and terminal, plus
- * the visited record behind the intrinsic rewards) from every transition and plans with
- * UCT(lambda) on it. Two ways to run:
- *   - real time (the default, `--planner parallel-uct`, `--rollouts 0`): the RTMBA
- *     architecture; model learning and planning run in their own threads while the agent acts
- *     at `--actrate` Hz (each action is due 1/actrate after its state arrived);
+ * The agent learns a model from every transition and plans on it:
+ *   --model tree (c45tree, texplore): an ExplorationModel (random forests per feature, reward
+ *       and terminal, plus the visited record behind the intrinsic rewards); every --explore;
+ *   --model tabular: a TabularModel (R-MAX optimism for --explore unknown); explore greedy,
+ *       epsilongreedy, random, boltzmann or unknown;
+ *   --model m5tree: an M5Model (regression trees with linear leaves); explore greedy,
+ *       epsilongreedy, random or boltzmann.
+ *   --planner uct / delayed-uct: UCT(λ) planned synchronously each step; parallel-uct /
+ *       delayed-parallel-uct: the RTMBA real-time architecture (synchronous with --rollouts).
+ *       Our UctPlanner keys its values by state and action history, which is what the
+ *       original's delayed (PO_) variants added, so the delayed names are the same planners.
+ *   --planner vi / pi / sweeping: value iteration, policy iteration or prioritized sweeping,
+ *       solved to convergence after every model update (StateSpacePlanner).
+ * Two ways to run UCT:
+ *   - real time (the default, `--planner parallel-uct`, `--rollouts 0`): model learning and
+ *     planning run in their own threads while the agent acts at `--actrate` Hz;
  *   - synchronous (`--rollouts N`, or `--planner uct`): each step learns from the last
  *     transition, then plans N rollouts (or until 1/actrate passed, for `uct` without
  *     `--rollouts`) before acting. With `--rollouts` the same seed gives the same run.
- * With `--history k` the last k actions (one-hot) are appended to the model's input.
+ * Action choice: the planner's greedy action, except with --explore epsilongreedy (random with
+ * probability epsilon), random (always uniformly random) and boltzmann (softmax of the
+ * planner's Q-values with temperature --tau).
+ * With `--history k` the last k actions (one-hot) are appended to the model's input. With
+ * `--nstates n` (not for m5tree) states are binned as the original's DiscretizationAgent
+ * before the model sees them.
  */
 #pragma once
 
@@ -27,7 +43,9 @@
 #include "rl_agent/agent/agent_options.h"
 #include "rl_agent/agent/reward_breakdown_source.h"
 #include "rl_agent/model/exploration_model.h"
+#include "rl_agent/model/tabular_model.h"
 #include "rl_agent/planner/real_time_planner.h"
+#include "rl_agent/planner/state_space_planner.h"
 #include "rl_agent/planner/uct_planner.h"
 #include "rl_common/agent.h"
 #include "rl_common/environment.h"
@@ -38,7 +56,8 @@ namespace rl_agent {
 class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
  public:
   /// Builds the agent for a task from the agent options (after applyAgentDefaults). Throws
-  /// std::invalid_argument for a model, planner or explore type it does not offer.
+  /// std::invalid_argument for a model, planner or explore type it does not offer, or a
+  /// combination that does not work (e.g. competence with a tabular model).
   ModelBasedAgent(const AgentOptions& options, const rl_common::EnvironmentDescription& task);
   ~ModelBasedAgent() override;
 
@@ -46,36 +65,62 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   int nextAction(float reward, const rl_common::State& s) override;
   void lastAction(float reward) override;
   void seedExperiences(const std::vector<rl_common::Experience>& seeds) override;
+  /// Writes the values of the states a vi/pi/sweeping planner knows in the original's
+  /// policy-file format; UCT planners do not save a policy (nothing is written).
+  void savePolicy(const std::string& filename) override;
 
   RewardBreakdown lastRewardBreakdown() const override { return lastBreakdown_; }
 
-  /// Switches the intrinsic rewards on or off (off: plan on the external reward only).
+  /// Switches the intrinsic rewards (R-MAX optimism for the tabular model) on or off (off:
+  /// plan on the external reward only).
   void setIntrinsicEnabled(bool enabled);
-  /// The model's current view (for evaluation); thread-safe.
+  /// The tree model's current view (for evaluation); thread-safe. Null for tabular and m5tree
+  /// models: use learnedModelView().
   std::shared_ptr<const ExplorationModel::View> modelView() const;
-  /// Rollouts planned for the last action.
+  /// The learned model's current view without intrinsic bonuses, for every model type (for
+  /// model-accuracy evaluation); thread-safe.
+  std::shared_ptr<const rl_common::ModelView> learnedModelView() const;
+  /// Rollouts (UCT) or solver iterations (vi/pi/sweeping) planned for the last action.
   long lastRollouts() const { return lastRollouts_; }
+  /// Seconds the last step spent updating the model (synchronous mode; 0 in real time, where
+  /// a thread of its own learns) and choosing the action (planning, or waiting for its due
+  /// time in real time).
+  double lastLearnSeconds() const { return lastLearnSeconds_; }
+  double lastPlanSeconds() const { return lastPlanSeconds_; }
   bool realTime() const { return realTime_ != nullptr; }
 
  private:
   int chooseAction(const rl_common::State& s);
   void learn(const rl_common::Experience& e);
+  rl_common::State binned(const rl_common::State& s) const;
   rl_common::State modelInput(const rl_common::State& s);
+  std::shared_ptr<const rl_common::ModelView> currentView() const;
+  std::vector<double> plannerValues(const rl_common::State& s);
 
   AgentOptions options_;
   rl_common::EnvironmentDescription task_;
   rl_common::Random rng_;
   bool epsilonGreedy_ = false;
+  bool randomActions_ = false;
+  bool boltzmann_ = false;
+  float tau_ = 0.2f;
+  std::vector<float> binFactor_;  ///< --nstates bin width per feature (empty: no binning)
   // Synchronous mode owns model and planner; real-time mode hands them to realTime_ and keeps
   // raw pointers for the few calls that need them (under RealTimePlanner's access rules).
-  std::unique_ptr<ExplorationModel> model_;
-  std::unique_ptr<UctPlanner> planner_;
-  ExplorationModel* modelPtr_ = nullptr;
+  std::unique_ptr<rl_common::MDPModel> model_;
+  std::unique_ptr<rl_common::Planner> planner_;
+  rl_common::MDPModel* modelPtr_ = nullptr;
+  ExplorationModel* exploration_ = nullptr;  ///< the model, when it is a tree model
+  TabularModel* tabular_ = nullptr;          ///< the model, when it is tabular
+  UctPlanner* uct_ = nullptr;                ///< the planner, when it is UCT (sync mode)
+  StateSpacePlanner* dp_ = nullptr;          ///< the planner, when it is vi/pi/sweeping
   std::unique_ptr<RealTimePlanner> realTime_;
   std::vector<int> history_;
   rl_common::State lastInput_;
   int lastAction_ = -1;
   long lastRollouts_ = 0;
+  double lastLearnSeconds_ = 0.0;
+  double lastPlanSeconds_ = 0.0;
   RewardBreakdown lastBreakdown_;
 };
 

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <map>
+#include <string>
 #include <vector>
 
 #include "rl_common/agent.h"
@@ -36,6 +37,8 @@ class QLearner : public rl_common::Agent {
   void lastAction(float reward) override;
   /// Applies one Q-update per seed transition (terminal-aware).
   void seedExperiences(const std::vector<rl_common::Experience>& seeds) override;
+  /// Writes Q in the original's policy-file format (PolicyFile).
+  void savePolicy(const std::string& filename) override;
 
   /// Q(s, a); `initialValue` for unseen pairs.
   float q(const rl_common::State& s, int action) const;

@@ -17,12 +17,15 @@
 #include "rl_agent/model/factored_model.h"
 #include "rl_agent/model/novelty_index.h"
 #include "rl_agent/reward/intrinsic_reward.h"
+#include "rl_agent/reward/learned_reward.h"
 
 namespace rl_agent {
 
 class ExplorationModel : public rl_common::MDPModel {
  public:
   using Rewards = std::vector<std::shared_ptr<const IntrinsicReward>>;
+  /// Bonuses that learn from prediction errors (see LearnedReward).
+  using Learners = std::vector<std::shared_ptr<LearnedReward>>;
 
   /// Immutable view: the model's prediction plus the bonuses. Thread-safe.
   class View : public rl_common::ModelView {
@@ -38,10 +41,12 @@ class ExplorationModel : public rl_common::MDPModel {
     std::shared_ptr<const Rewards> rewards_;  ///< null when intrinsic rewards are off
   };
 
-  ExplorationModel(const FactoredModel::Config& config, std::uint64_t seed, Rewards rewards);
+  ExplorationModel(const FactoredModel::Config& config, std::uint64_t seed, Rewards rewards,
+                   Learners learners = {});
 
   /// Learns the model and records each (s, a) as visited (seeds and terminal
-  /// ones too).
+  /// ones too). Learned rewards first see each experience with the model's prediction
+  /// for it from before this update.
   bool update(const std::vector<rl_common::Experience>& experiences) override;
   std::shared_ptr<const rl_common::ModelView> view() const override { return explorationView(); }
   std::shared_ptr<const View> explorationView() const;
@@ -56,6 +61,7 @@ class ExplorationModel : public rl_common::MDPModel {
   FactoredModel model_;
   NoveltyIndex visited_;
   std::shared_ptr<const Rewards> rewards_;
+  Learners learners_;
   std::atomic<bool> enabled_{true};  ///< set by the acting thread, read by the learner
 };
 

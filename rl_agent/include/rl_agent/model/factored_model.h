@@ -10,12 +10,12 @@
  * one-hot: x = [s, onehot(a)]. Feature forests learn only from non-terminal
  * transitions; reward and terminal forests from all.
  *
- * A query combines the per-feature distributions as an independent product into
- * a distribution over absolute next states: P(s' | s, a) = prod_j P_j(s'_j -
- * s_j | x), pruning combinations below 1e-6 and renormalising; reward =
- * E[reward forest]; termProb = E[clip(terminal forest, 0, 1)] (0 if
- * non-episodic). Before any data the model predicts a self-transition with
- * reward -0.001 and known = false, as the original.
+ * A query returns the per-feature distributions (StateActionInfo::factored) whose independent
+ * product is the distribution over absolute next states:
+ *   P(s' | s, a) = prod_j P_j(s'_j - s_j | x)
+ * (rl_common::expandTransitions() lists it when needed); reward = E[reward forest];
+ * termProb = E[clip(terminal forest, 0, 1)] (0 if non-episodic). Before any data the model
+ * predicts a self-transition with reward -0.001 and known = false, as the original.
  *
  * The model's variance (VANIR's D(s,a), ORIGINAL.md §5.2) is the forests'
  * disagreement averaged over the outputs {features, reward, terminal}, where

@@ -1,0 +1,123 @@
+/**
+ * StateSpacePlanner: the shared machinery of the dynamic-programming planners (value
+ * iteration, policy iteration, prioritized sweeping; the original's ValueIteration,
+ * PolicyIteration and PrioritizedSweeping, ORIGINAL.md §7.3).
+ *
+ * The planner keeps a table of states: every root it was asked to plan from (and any added
+ * with addStates), plus every state the model predicts within `maxSteps` transitions of a root
+ * (the original's MAX_STEPS). For each table state within that distance it caches the model's
+ * prediction for every action, for the current model version (setModel() makes them stale;
+ * they are re-queried on the next plan()). Values follow the Bellman equation of the model:
+ *
+ *   Q(s,a) = R(s,a) + γ (1 − T(s,a)) Σ_s' P(s'|s,a) max_a' Q(s',a')
+ *
+ * where R includes any intrinsic bonus the model view adds and T is its termination
+ * probability. States at the distance limit (or beyond `maxStates`) are not expanded: their Q
+ * stays at its initial 0. Subclasses decide how the equation is solved (solve()). Values are
+ * warm-started from the previous model version. A budget's `rollouts` caps the solver's
+ * iterations (sweeps, policy iterations or single backups); its deadline is honoured between
+ * iterations; an empty budget (no rollouts, no deadline) solves to convergence within the
+ * solver's own cap. Deterministic; not thread-safe.
+ */
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+#include "rl_agent/planner/state_hash.h"
+#include "rl_common/planner.h"
+#include "rl_common/random.h"
+
+namespace rl_agent {
+
+class StateSpacePlanner : public rl_common::Planner {
+ public:
+  struct Config {
+    int numActions = 0;
+    double gamma = 0.99;              ///< discount, in [0, 1)
+    double tolerance = 1e-4;          ///< convergence threshold on value changes (MIN_ERROR)
+    int maxSteps = 100;               ///< expand states within this many model steps of a root
+    std::size_t maxStates = 1000000;  ///< table size limit
+    long maxIterations = 100000;      ///< solver's own cap per plan()
+    /// Bins per feature for continuous models (0: states are used as they are). States (roots
+    /// and predicted successors) are binned as the original's discretisation: factor =
+    /// (max − min)/n, bin = int((s ± factor/2)/factor) (+ for s > 0), s = factor · bin.
+    int statesPerDim = 0;
+    std::vector<float> featMin, featMax;  ///< declared ranges (needed with statesPerDim)
+  };
+
+  /// Throws std::invalid_argument for a bad configuration.
+  StateSpacePlanner(const Config& config, std::uint64_t seed);
+
+  void setModel(std::shared_ptr<const rl_common::ModelView> model) override;
+  /// Adds `s` as a root, brings predictions up to date, expands, then solves within `budget`.
+  /// Returns the solver's iterations. Throws std::runtime_error without a model.
+  long plan(const rl_common::State& s, const rl_common::PlanningBudget& budget) override;
+  /// Greedy action in `s` (ties within 1e-4 at random); a random action for an unknown state.
+  /// With statesPerDim, every state argument is binned first.
+  int bestAction(const rl_common::State& s) override;
+
+  /// Makes every state in `states` a root (e.g. all reachable states of a known model).
+  void addStates(const std::vector<rl_common::State>& states);
+  /// Q(s, ·); empty if `s` is not in the table.
+  std::vector<double> qValues(const rl_common::State& s) const;
+  /// max_a Q(s, a); 0 for a state not in the table.
+  double value(const rl_common::State& s) const;
+  std::size_t numStates() const { return states_.size(); }
+  /// Every state whose predictions are cached, in table order.
+  std::vector<rl_common::State> expandedStates() const;
+  /// States whose predictions are cached (within maxSteps of a root).
+  std::size_t numExpanded() const;
+  const Config& config() const { return config_; }
+
+  static constexpr double kTieTolerance = 1e-4;
+
+ protected:
+  struct Successor {
+    int state;  ///< index into states_
+    double p;
+  };
+  struct Node {
+    rl_common::State key;
+    std::vector<double> q;
+    int depth = 0;          ///< model steps from the nearest root
+    bool expanded = false;  ///< predictions below are valid for the current version
+    std::vector<std::vector<Successor>> next;  ///< per action
+    std::vector<double> reward;                ///< per action
+    std::vector<double> continueProb;          ///< per action: 1 − termProb
+  };
+
+  /// Solves the Bellman equation on the expanded states within `budget`; returns the
+  /// iterations done. `changed` lists the states whose predictions were (re)queried by this
+  /// plan() call.
+  virtual long solve(const rl_common::PlanningBudget& budget, const std::vector<int>& changed) = 0;
+
+  /// R + γ(1−T) Σ P max Q' for (s, a).
+  double backup(int s, int a) const;
+  double maxQ(int s) const;
+  /// True if the budget allows another iteration after `done` ones.
+  bool allows(const rl_common::PlanningBudget& budget, long done) const;
+
+  std::vector<Node> states_;
+  Config config_;
+
+ private:
+  int indexOf(const rl_common::State& s);
+  rl_common::State binned(const rl_common::State& s) const;
+  std::vector<int> refresh();
+
+  rl_common::Random rng_;
+  std::shared_ptr<const rl_common::ModelView> model_;
+  std::uint64_t version_ = 0;
+  std::uint64_t refreshedVersion_ = 0;
+  std::unordered_map<rl_common::State, int, StateHash> index_;
+  std::vector<int> roots_;
+  std::vector<char> isRoot_;
+  bool newRoots_ = false;
+  bool solved_ = false;           // solved without a budget limit and nothing changed since
+  std::vector<float> binFactor_;  // per feature; empty: no binning
+};
+
+}  // namespace rl_agent

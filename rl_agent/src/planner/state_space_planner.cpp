@@ -1,0 +1,209 @@
+#include "rl_agent/planner/state_space_planner.h"
+
+#include <algorithm>
+#include <deque>
+#include <stdexcept>
+
+namespace rl_agent {
+
+StateSpacePlanner::StateSpacePlanner(const Config& config, std::uint64_t seed)
+    : config_(config), rng_(seed) {
+  if (config.numActions < 1) {
+    throw std::invalid_argument("StateSpacePlanner::StateSpacePlanner(): numActions must be >= 1");
+  }
+  if (!(config.gamma >= 0.0 && config.gamma < 1.0)) {
+    throw std::invalid_argument("StateSpacePlanner::StateSpacePlanner(): gamma must be in [0, 1)");
+  }
+  if (!(config.tolerance > 0.0) || config.maxSteps < 0 || config.maxStates < 1 ||
+      config.maxIterations < 1) {
+    throw std::invalid_argument(
+        "StateSpacePlanner::StateSpacePlanner(): need tolerance > 0, maxSteps >= 0, "
+        "maxStates >= 1 and maxIterations >= 1");
+  }
+  if (config.statesPerDim < 0 ||
+      (config.statesPerDim > 0 &&
+       (config.featMin.empty() || config.featMin.size() != config.featMax.size()))) {
+    throw std::invalid_argument(
+        "StateSpacePlanner::StateSpacePlanner(): statesPerDim needs the feature ranges");
+  }
+  for (std::size_t j = 0; config.statesPerDim > 0 && j < config.featMin.size(); ++j) {
+    binFactor_.push_back((config.featMax[j] - config.featMin[j]) /
+                         static_cast<float>(config.statesPerDim));
+  }
+}
+
+rl_common::State StateSpacePlanner::binned(const rl_common::State& s) const {
+  if (binFactor_.empty()) return s;
+  rl_common::State out(s);
+  for (std::size_t j = 0; j < binFactor_.size() && j < s.size(); ++j) {
+    const float f = binFactor_[j];
+    if (f <= 0.0f) continue;
+    const int bin = s[j] > 0.0f ? static_cast<int>((s[j] + f / 2.0f) / f)
+                                : static_cast<int>((s[j] - f / 2.0f) / f);
+    out[j] = f * static_cast<float>(bin);
+  }
+  return out;
+}
+
+void StateSpacePlanner::setModel(std::shared_ptr<const rl_common::ModelView> model) {
+  if (model == nullptr) throw std::invalid_argument("StateSpacePlanner::setModel(): null model");
+  model_ = std::move(model);
+  ++version_;
+}
+
+int StateSpacePlanner::indexOf(const rl_common::State& raw) {
+  const rl_common::State s = binned(raw);
+  const auto it = index_.find(s);
+  if (it != index_.end()) return it->second;
+  if (states_.size() >= config_.maxStates) return -1;
+  const int i = static_cast<int>(states_.size());
+  Node n;
+  n.key = s;
+  n.q.assign(static_cast<std::size_t>(config_.numActions), 0.0);
+  n.depth = config_.maxSteps + 1;
+  states_.push_back(std::move(n));
+  isRoot_.push_back(0);
+  index_.emplace(s, i);
+  return i;
+}
+
+void StateSpacePlanner::addStates(const std::vector<rl_common::State>& states) {
+  for (const auto& s : states) {
+    const int i = indexOf(s);
+    if (i < 0 || isRoot_[static_cast<std::size_t>(i)]) continue;
+    isRoot_[static_cast<std::size_t>(i)] = 1;
+    roots_.push_back(i);
+    newRoots_ = true;
+  }
+}
+
+std::vector<int> StateSpacePlanner::refresh() {
+  // Breadth-first from the roots: depths, then predictions for states within maxSteps.
+  const bool newVersion = refreshedVersion_ != version_;
+  if (!newVersion && !newRoots_) return {};
+  for (auto& n : states_) {
+    n.depth = config_.maxSteps + 1;
+    if (newVersion) n.expanded = false;
+  }
+  std::deque<int> queue;
+  for (int r : roots_) {
+    states_[static_cast<std::size_t>(r)].depth = 0;
+    queue.push_back(r);
+  }
+  std::vector<int> changed;
+  const auto A = static_cast<std::size_t>(config_.numActions);
+  while (!queue.empty()) {
+    const int i = queue.front();
+    queue.pop_front();
+    if (states_[static_cast<std::size_t>(i)].depth >= config_.maxSteps + 1) continue;
+    if (!states_[static_cast<std::size_t>(i)].expanded) {
+      std::vector<std::vector<Successor>> next(A);
+      std::vector<double> reward(A), cont(A);
+      const rl_common::State key = states_[static_cast<std::size_t>(i)].key;
+      for (std::size_t a = 0; a < A; ++a) {
+        const auto info = model_->query(key, static_cast<int>(a));
+        reward[a] = info.reward;
+        cont[a] = 1.0 - std::clamp(static_cast<double>(info.termProb), 0.0, 1.0);
+        for (const auto& [s2, p] : rl_common::expandTransitions(info)) {
+          if (p <= 0.0) continue;
+          const int j = indexOf(s2);  // may reallocate states_
+          if (j >= 0) next[a].push_back({j, p});
+        }
+      }
+      Node& n = states_[static_cast<std::size_t>(i)];
+      n.next = std::move(next);
+      n.reward = std::move(reward);
+      n.continueProb = std::move(cont);
+      n.expanded = true;
+      changed.push_back(i);
+    }
+    const int d = states_[static_cast<std::size_t>(i)].depth;
+    if (d >= config_.maxSteps) continue;
+    for (const auto& succ : states_[static_cast<std::size_t>(i)].next) {
+      for (const auto& s : succ) {
+        Node& m = states_[static_cast<std::size_t>(s.state)];
+        if (m.depth > d + 1) {
+          m.depth = d + 1;
+          queue.push_back(s.state);
+        }
+      }
+    }
+  }
+  refreshedVersion_ = version_;
+  newRoots_ = false;
+  return changed;
+}
+
+long StateSpacePlanner::plan(const rl_common::State& s, const rl_common::PlanningBudget& budget) {
+  if (model_ == nullptr) throw std::runtime_error("StateSpacePlanner::plan(): no model");
+  addStates({s});
+  const std::vector<int> changed = refresh();
+  if (!changed.empty()) solved_ = false;
+  if (solved_) return 0;  // nothing changed since a solve to convergence
+  const long iterations = solve(budget, changed);
+  solved_ = budget.rollouts == 0 && budget.deadline == std::chrono::steady_clock::time_point::max();
+  return iterations;
+}
+
+double StateSpacePlanner::maxQ(int s) const {
+  const auto& q = states_[static_cast<std::size_t>(s)].q;
+  return *std::max_element(q.begin(), q.end());
+}
+
+double StateSpacePlanner::backup(int s, int a) const {
+  const Node& n = states_[static_cast<std::size_t>(s)];
+  const auto ai = static_cast<std::size_t>(a);
+  double future = 0.0;
+  for (const auto& succ : n.next[ai]) future += succ.p * maxQ(succ.state);
+  return n.reward[ai] + config_.gamma * n.continueProb[ai] * future;
+}
+
+bool StateSpacePlanner::allows(const rl_common::PlanningBudget& budget, long done) const {
+  if (done >= config_.maxIterations) return false;
+  if (budget.rollouts > 0 && done >= budget.rollouts) return false;
+  if (budget.deadline != std::chrono::steady_clock::time_point::max() && done > 0 &&
+      std::chrono::steady_clock::now() >= budget.deadline) {
+    return false;
+  }
+  return true;
+}
+
+int StateSpacePlanner::bestAction(const rl_common::State& s) {
+  const auto it = index_.find(binned(s));
+  if (it == index_.end() || !states_[static_cast<std::size_t>(it->second)].expanded) {
+    return rng_.uniformInt(0, config_.numActions - 1);
+  }
+  const auto& q = states_[static_cast<std::size_t>(it->second)].q;
+  const double best = *std::max_element(q.begin(), q.end());
+  std::vector<int> ties;
+  for (int a = 0; a < config_.numActions; ++a) {
+    if (q[static_cast<std::size_t>(a)] >= best - kTieTolerance) ties.push_back(a);
+  }
+  return ties[static_cast<std::size_t>(rng_.uniformInt(0, static_cast<int>(ties.size()) - 1))];
+}
+
+std::vector<double> StateSpacePlanner::qValues(const rl_common::State& s) const {
+  const auto it = index_.find(binned(s));
+  if (it == index_.end()) return {};
+  return states_[static_cast<std::size_t>(it->second)].q;
+}
+
+double StateSpacePlanner::value(const rl_common::State& s) const {
+  const auto it = index_.find(binned(s));
+  return it == index_.end() ? 0.0 : maxQ(it->second);
+}
+
+std::vector<rl_common::State> StateSpacePlanner::expandedStates() const {
+  std::vector<rl_common::State> out;
+  for (const auto& n : states_) {
+    if (n.expanded) out.push_back(n.key);
+  }
+  return out;
+}
+
+std::size_t StateSpacePlanner::numExpanded() const {
+  return static_cast<std::size_t>(
+      std::count_if(states_.begin(), states_.end(), [](const Node& n) { return n.expanded; }));
+}
+
+}  // namespace rl_agent

@@ -1,0 +1,96 @@
+// Value iteration, policy iteration and prioritized sweeping on a small MDP with known values.
+#include <gtest/gtest.h>
+
+#include "rl_agent/planner/policy_iteration.h"
+#include "rl_agent/planner/prioritized_sweeping.h"
+#include "rl_agent/planner/value_iteration.h"
+#include "small_mdps.h"
+
+using namespace rl_agent;
+using rl_common::State;
+
+namespace {
+
+StateSpacePlanner::Config config(double tolerance = 1e-8) {
+  StateSpacePlanner::Config c;
+  c.numActions = 2;
+  c.gamma = 0.9;
+  c.tolerance = tolerance;
+  c.maxSteps = 10;
+  return c;
+}
+
+template <class P>
+void expectChainValues(P& planner, double tol) {
+  planner.setModel(test_mdps::chainModel());
+  planner.plan(State{0}, rl_common::PlanningBudget{});
+  planner.plan(State{2}, rl_common::PlanningBudget{});
+  const auto qa = planner.qValues(State{0});
+  const auto qb = planner.qValues(State{1});
+  const auto qc = planner.qValues(State{2});
+  ASSERT_EQ(qa.size(), 2u);
+  ASSERT_EQ(qb.size(), 2u);
+  EXPECT_NEAR(qb[0], test_mdps::kChainVB, tol);
+  EXPECT_NEAR(qa[1], test_mdps::kChainVA, tol);
+  EXPECT_NEAR(qa[0], 0.9 * test_mdps::kChainVA, tol);
+  EXPECT_NEAR(qb[1], 0.9 * test_mdps::kChainVA, tol);
+  EXPECT_NEAR(qc[0], 5.0, tol);  // terminal: no bootstrap
+  EXPECT_EQ(planner.bestAction(State{0}), 1);
+  EXPECT_EQ(planner.bestAction(State{1}), 0);
+}
+
+}  // namespace
+
+TEST(ValueIteration, ConvergesToHandComputedValues) {
+  ValueIteration vi(config(), 1);
+  expectChainValues(vi, 1e-5);
+  EXPECT_GT(vi.lastSweeps(), 1);
+}
+
+TEST(PolicyIteration, ConvergesToHandComputedValues) {
+  PolicyIteration pi(config(), 1);
+  expectChainValues(pi, 1e-5);
+}
+
+TEST(PrioritizedSweeping, ConvergesCloseToValueIteration) {
+  // Threshold 1e-4: values within about 1e-4 / (1 − γ) = 1e-3.
+  PrioritizedSweeping ps(config(1e-4), 1);
+  expectChainValues(ps, 2e-3);
+}
+
+TEST(ValueIteration, BudgetLimitsSweepsAndWarmStartContinues) {
+  ValueIteration vi(config(), 1);
+  vi.setModel(test_mdps::chainModel());
+  EXPECT_EQ(vi.plan(State{0}, rl_common::PlanningBudget::ofRollouts(3)), 3);
+  EXPECT_LT(vi.value(State{1}), 5.0);  // 3 sweeps: far from 10
+  vi.plan(State{0}, rl_common::PlanningBudget{});
+  EXPECT_NEAR(vi.value(State{1}), 10.0, 1e-5);
+  // Converged and nothing changed: no more work.
+  EXPECT_EQ(vi.plan(State{0}, rl_common::PlanningBudget{}), 0);
+}
+
+TEST(ValueIteration, ExpandsOnlyWithinMaxSteps) {
+  // A chain 0 -> 1 -> 2 -> ... ; with maxSteps 2 only states 0, 1, 2 get predictions.
+  auto m = std::make_shared<test_mdps::TableModelView>();
+  for (int i = 0; i < 10; ++i) {
+    m->set(State{float(i)}, 0, {{State{float(i + 1)}, 1.0}}, 1.0f);
+    m->set(State{float(i)}, 1, {{State{float(i)}, 1.0}}, 0.0f);
+  }
+  auto c = config();
+  c.maxSteps = 2;
+  ValueIteration vi(c, 1);
+  vi.setModel(m);
+  vi.plan(State{0}, rl_common::PlanningBudget{});
+  EXPECT_EQ(vi.numExpanded(), 3u);
+  // State 3 is unexpanded (Q = 0): Q(2, a0) = 1, Q(1, a0) = 1.9, Q(0, a0) = 2.71.
+  EXPECT_NEAR(vi.value(State{0}), 2.71, 1e-6);
+  EXPECT_THROW(ValueIteration(StateSpacePlanner::Config{}, 1), std::invalid_argument);
+}
+
+TEST(StateSpacePlanner, UnknownStateGivesRandomActionAndNoModelThrows) {
+  ValueIteration vi(config(), 1);
+  EXPECT_THROW(vi.plan(State{0}, rl_common::PlanningBudget{}), std::runtime_error);
+  const int a = vi.bestAction(State{42});
+  EXPECT_TRUE(a == 0 || a == 1);
+  EXPECT_TRUE(vi.qValues(State{42}).empty());
+}

@@ -1,0 +1,150 @@
+// ModelBasedAgent (texplore) on a small self-contained task: a corridor of 8 cells where
+// action 1 moves right, 0 left, 2 stays; reaching cell 7 pays +1 and ends the episode.
+#include "rl_agent/agent/model_based_agent.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <thread>
+
+#include "rl_agent/agent/agent_options.h"
+
+using rl_agent::AgentOptions;
+using rl_agent::ModelBasedAgent;
+using rl_common::State;
+
+namespace {
+
+rl_common::EnvironmentDescription corridorTask() {
+  rl_common::EnvironmentDescription d;
+  d.numActions = 3;
+  d.minFeatures = {0.0f};
+  d.maxFeatures = {7.0f};
+  d.minReward = 0.0f;
+  d.maxReward = 1.0f;
+  d.episodic = true;
+  d.stochastic = false;
+  return d;
+}
+
+AgentOptions texplore(const std::vector<std::string>& extra) {
+  AgentOptions o;
+  rl_common::OptionParser p("test", "");
+  rl_agent::addAgentOptions(p, &o);
+  std::vector<std::string> args{"--agent", "texplore"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  p.parse(args);
+  rl_agent::applyAgentDefaults(p, &o);
+  rl_agent::checkAgentOptions(p, o);
+  return o;
+}
+
+int step(int x, int a) { return std::max(0, std::min(7, x + (a == 1 ? 1 : a == 0 ? -1 : 0))); }
+
+// Runs `episodes` episodes of at most 60 steps; returns the steps of each.
+std::vector<int> run(ModelBasedAgent& agent, int episodes, std::vector<int>* actions = nullptr) {
+  std::vector<int> lengths;
+  for (int e = 0; e < episodes; ++e) {
+    int x = 0;
+    int a = agent.firstAction({float(x)});
+    int n = 1;
+    for (; n <= 60; ++n) {
+      if (actions) actions->push_back(a);
+      x = step(x, a);
+      if (x == 7) {
+        agent.lastAction(1.0f);
+        break;
+      }
+      a = agent.nextAction(0.0f, {float(x)});
+    }
+    lengths.push_back(n);
+  }
+  return lengths;
+}
+
+}  // namespace
+
+TEST(ModelBasedAgent, VanirLearnsTheCorridor) {
+  // Greedy TEXPLORE has no reason to walk 7 cells before it ever saw a reward; the novelty
+  // and variance rewards take it there, and once the model is learned it exploits.
+  AgentOptions o = texplore({"--rollouts", "200", "--v", "1", "--n", "3"});
+  o.seed = 3;
+  ModelBasedAgent agent(o, corridorTask());
+  EXPECT_FALSE(agent.realTime());
+  const auto lengths = run(agent, 15);
+  // Optimal is 7 steps; after learning the model the agent walks straight to the goal.
+  int optimal = 0;
+  for (std::size_t e = 10; e < lengths.size(); ++e) optimal += lengths[e] == 7;
+  EXPECT_GE(optimal, 4) << "late episode lengths: " << lengths[10] << " " << lengths[11] << " "
+                        << lengths[12] << " " << lengths[13] << " " << lengths[14];
+}
+
+TEST(ModelBasedAgent, SameSeedSameRunInFixedRolloutMode) {
+  AgentOptions o = texplore({"--rollouts", "50", "--v", "1", "--n", "3"});
+  o.seed = 9;
+  ModelBasedAgent a(o, corridorTask()), b(o, corridorTask());
+  std::vector<int> actionsA, actionsB;
+  run(a, 3, &actionsA);
+  run(b, 3, &actionsB);
+  EXPECT_EQ(actionsA, actionsB);
+  o.seed = 10;
+  ModelBasedAgent c(o, corridorTask());
+  std::vector<int> actionsC;
+  run(c, 3, &actionsC);
+  EXPECT_NE(actionsA, actionsC);
+}
+
+TEST(ModelBasedAgent, VanirReportsItsIntrinsicRewards) {
+  AgentOptions o = texplore({"--rollouts", "20", "--v", "1", "--n", "3"});
+  ModelBasedAgent agent(o, corridorTask());
+  agent.firstAction({0.0f});
+  // Nothing is known: every action is novel (delta = 1, bonus n = 3).
+  EXPECT_FLOAT_EQ(agent.lastRewardBreakdown().novelty, 3.0f);
+  agent.nextAction(0.0f, {1.0f});
+  const auto view = agent.modelView();
+  EXPECT_EQ(view->model().numExperiences(), 1u);
+  agent.setIntrinsicEnabled(false);
+  agent.nextAction(0.0f, {2.0f});
+  EXPECT_FLOAT_EQ(agent.lastRewardBreakdown().novelty, 0.0f);
+  EXPECT_FLOAT_EQ(agent.lastRewardBreakdown().variance, 0.0f);
+}
+
+TEST(ModelBasedAgent, HistoryAndSeedsAreAccepted) {
+  AgentOptions o = texplore({"--rollouts", "20", "--history", "2"});
+  ModelBasedAgent agent(o, corridorTask());
+  agent.seedExperiences({{{6.0f}, 1, 1.0f, {7.0f}, true}});
+  const auto lengths = run(agent, 2);
+  ASSERT_EQ(lengths.size(), 2u);
+  // One experience per action: a cut-off episode (61) took 60 actions, a finished one n.
+  std::size_t expected = 1;  // the seed
+  for (int n : lengths) expected += n > 60 ? 60 : n;
+  EXPECT_EQ(agent.modelView()->model().numExperiences(), expected);
+}
+
+TEST(ModelBasedAgent, RealTimeAgentActsAtItsRateAndStopsCleanly) {
+  AgentOptions o = texplore({"--actrate", "50", "--v", "1", "--n", "3"});
+  for (int repeat = 0; repeat < 3; ++repeat) {
+    ModelBasedAgent agent(o, corridorTask());
+    ASSERT_TRUE(agent.realTime());
+    const auto start = std::chrono::steady_clock::now();
+    run(agent, 1);
+    int x = 0;
+    agent.firstAction({0.0f});
+    for (int i = 0; i < 10; ++i) agent.nextAction(0.0f, {float(x = std::min(6, x + 1))});
+    // Each action is due 1/50 s after its state: 11+ actions take at least 0.2 s.
+    EXPECT_GE(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(200));
+    EXPECT_GT(agent.lastRollouts(), 0);
+  }  // the destructor joins the learning and planning threads
+}
+
+TEST(ModelBasedAgent, RejectsWhatItDoesNotOffer) {
+  AgentOptions o = texplore({});
+  o.planner = "astar";
+  EXPECT_THROW(ModelBasedAgent(o, corridorTask()), std::invalid_argument);
+  o = texplore({});
+  rl_common::EnvironmentDescription empty;
+  EXPECT_THROW(ModelBasedAgent(o, empty), std::invalid_argument);
+  ModelBasedAgent agent(texplore({"--rollouts", "5"}), corridorTask());
+  EXPECT_THROW(agent.nextAction(0.0f, {1.0f}), std::logic_error);
+}
