@@ -1,89 +1,70 @@
 // Standalone experiment runner: an agent and an environment in one process, no ROS master.
-// Prints the original's data stream (one bare number per episode, or per step for
-// non-episodic tasks) on stderr and the configuration and a summary on stdout.
-#include <cstdint>
+// Writes the logs of every trial into --out (see rl_experiment/runner/experiment.h), prints the
+// configuration and one line per trial on stdout, a progress bar on a terminal, and with
+// --format original the original's bare-number stream on stderr.
+#include <unistd.h>
+
 #include <iostream>
-#include <memory>
+#include <string>
 
 #include "rl_agent/agent/agent_registry.h"
-#include "rl_common/random.h"
 #include "rl_env/env/environment_registry.h"
-#include "rl_experiment/runner/trial_runner.h"
-
-namespace {
-
-// The original's stderr stream: one number per episode, or per step if non-episodic.
-class OriginalFormatPrinter : public rl_experiment::TrialObserver {
- public:
-  explicit OriginalFormatPrinter(bool perStep) : perStep_(perStep) {}
-  void onStep(const rl_experiment::StepRecord& r) override {
-    if (perStep_) std::cerr << r.reward << "\n";
-  }
-  void onEpisode(const rl_experiment::EpisodeRecord& r) override {
-    if (!perStep_) std::cerr << r.reward << std::endl;
-  }
-
- private:
-  bool perStep_;
-};
-
-}  // namespace
+#include "rl_experiment/runner/experiment.h"
 
 int main(int argc, char** argv) {
-  rl_agent::AgentOptions agentOptions;
-  agentOptions.agent = "qlearner";
-  rl_env::EnvironmentOptions envOptions;
-  int nepisodes = 1000;
-  int maxsteps = 1000;
-  int trials = 1;
+  rl_experiment::ExperimentConfig config;
+  config.agent.agent = "qlearner";
+  bool listAgents = false;
+  bool check = false;
   rl_common::OptionParser parser("experiment", "--agent <type> --env <type> [options]");
-  rl_agent::addAgentOptions(parser, &agentOptions);
-  rl_env::addEnvironmentOptions(parser, &envOptions);
-  parser.value("nepisodes", &nepisodes,
-               "episodes per trial (steps for non-episodic tasks, as the original)",
-               rl_common::atLeast(0));
-  parser.value("maxsteps", &maxsteps, "actions per episode before it is cut off",
-               rl_common::greaterThan(0));
-  parser.value("trials", &trials, "number of trials", rl_common::greaterThan(0));
+  rl_experiment::addExperimentOptions(parser, &config);
+  parser.flag("list-agents", &listAgents, true,
+              "print the registered agents (name and description), one a line, and exit");
+  parser.flag("check", &check, true, "validate the options and exit (0 if valid)");
   try {
     if (!parser.parse(argc, argv)) {
-      std::cout << parser.help();
+      std::cout << parser.help()
+                << "\nValid agents: " << rl_common::joinNames(rl_agent::agentRegistry().names())
+                << "\nValid environments: "
+                << rl_common::joinNames(rl_env::environmentRegistry().names()) << "\n";
       return 0;
     }
-    rl_env::checkEnvironmentOptions(parser, envOptions);
-    rl_agent::agentRegistry().canonical(agentOptions.agent);
-    rl_env::environmentRegistry().canonical(envOptions.env);
-    rl_agent::applyAgentDefaults(parser, &agentOptions);
-    rl_agent::checkAgentOptions(parser, agentOptions);
-    const std::uint64_t runSeed = envOptions.seed;
-    for (const auto& [name, value] : parser.currentValues()) {
-      std::cout << "config " << name << " = " << value << "\n";
+    if (listAgents) {
+      for (const auto& name : rl_agent::agentRegistry().names()) {
+        std::cout << name << "\t" << rl_agent::agentRegistry().description(name) << "\n";
+      }
+      return 0;
     }
-    for (int trial = 0; trial < trials; ++trial) {
-      // Independent streams per trial and component (the original shared one stream).
-      rl_env::EnvironmentOptions eo = envOptions;
-      eo.seed = rl_common::Random::deriveSeed(runSeed, "environment", trial);
-      rl_agent::AgentOptions ao = agentOptions;
-      ao.seed = rl_common::Random::deriveSeed(runSeed, "agent", trial);
-      auto env = rl_env::makeEnvironment(eo);
-      auto agent = rl_agent::makeAgent(ao, env->describe());
-      std::cout << "Environment is " << (env->isEpisodic() ? "" : "NOT ") << "episodic."
-                << std::endl;
-      rl_experiment::TrialLimits limits;
-      limits.steps = nepisodes;
-      limits.episodes = nepisodes;
-      limits.maxSteps = maxsteps;
-      OriginalFormatPrinter printer(!env->isEpisodic());
-      const auto summary = rl_experiment::TrialRunner(limits).run(*env, *agent, &printer);
-      std::cout << "trial " << trial << ": " << summary.steps << " steps, " << summary.episodes
-                << " episodes, total reward " << summary.totalReward << std::endl;
-    }
+    rl_experiment::finishExperimentConfig(parser, &config);
   } catch (const rl_common::OptionError& e) {
-    std::cerr << e.what() << "\n(see experiment --help)\n";
+    std::cerr << "experiment: " << e.what() << "\n(see experiment --help)\n";
     return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "experiment: " << e.what() << "\n(see experiment --help)\n";
+    return 2;
+  }
+  if (check) return 0;
+
+  std::string commandLine;
+  for (int i = 0; i < argc; ++i) commandLine += (i > 0 ? " " : "") + std::string(argv[i]);
+  auto values = parser.currentValues();
+  try {
+    rl_experiment::Experiment experiment(config, values, commandLine);
+    experiment.prepare();
+    std::cout << "suite version: " << rl_experiment::suiteVersion() << "\n";
+    for (const auto& [name, value] : values) {
+      if (name != "list-agents" && name != "check") {
+        std::cout << "config " << name << " = " << value << "\n";
+      }
+    }
+    std::cout << "Environment is "
+              << (rl_env::makeEnvironment(config.env)->isEpisodic() ? "" : "NOT ") << "episodic."
+              << std::endl;
+    const int failed = experiment.run(std::cout, std::cerr);
+    if (!config.out.empty()) std::cout << "logs in " << config.out << "\n";
+    return failed == 0 ? 0 : 1;
   } catch (const std::exception& e) {
     std::cerr << "experiment: " << e.what() << "\n";
     return 1;
   }
-  return 0;
 }

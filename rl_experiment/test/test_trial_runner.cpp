@@ -117,3 +117,76 @@ TEST(TrialRunner, EpisodeCutOffAtMaxSteps) {
   EXPECT_FALSE(log.episodes[0].terminal);
   EXPECT_THROW(rl_experiment::TrialRunner({1, 1, 0}), std::invalid_argument);
 }
+
+namespace {
+
+// Non-episodic countdown that pays 1 on every step; records what the agent receives.
+class RewardRecorder : public rl_common::Agent {
+ public:
+  int firstAction(const rl_common::State&) override { return 0; }
+  int nextAction(float r, const rl_common::State&) override {
+    received.push_back(r);
+    return 0;
+  }
+  void lastAction(float r) override { received.push_back(r); }
+  std::vector<float> received;
+};
+
+class PhaseLog : public rl_experiment::TrialObserver {
+ public:
+  void onPhase(rl_experiment::Phase p) override { phases.push_back(p); }
+  void onStep(const rl_experiment::StepRecord& r) override { steps.push_back(r); }
+  void onCheckpoint(long n, rl_experiment::Phase, const rl_common::Agent&,
+                    const rl_common::Environment&) override {
+    checkpoints.push_back(n);
+  }
+  std::vector<rl_experiment::Phase> phases;
+  std::vector<rl_experiment::StepRecord> steps;
+  std::vector<long> checkpoints;
+};
+
+}  // namespace
+
+TEST(TrialRunner, ExplorePhaseHidesTheRewardTaskPhaseShowsIt) {
+  Countdown env(100, false);
+  RewardRecorder agent;
+  PhaseLog log;
+  rl_experiment::TrialLimits limits;
+  limits.exploreSteps = 3;
+  limits.taskSteps = 4;
+  limits.checkpointEvery = 3;
+  const auto s = rl_experiment::TrialRunner(limits).run(env, agent, &log);
+  EXPECT_EQ(s.steps, 7);
+  EXPECT_DOUBLE_EQ(s.exploreReward, 3.0);
+  EXPECT_DOUBLE_EQ(s.taskReward, 4.0);
+  EXPECT_DOUBLE_EQ(s.totalReward, 7.0);
+  // nextAction after steps 0..5: the rewards of steps 0-2 are hidden, 3-5 shown.
+  EXPECT_EQ(agent.received, (std::vector<float>{0, 0, 0, 1, 1, 1}));
+  ASSERT_EQ(log.phases.size(), 2u);
+  EXPECT_EQ(log.phases[0], rl_experiment::Phase::kExplore);
+  EXPECT_EQ(log.phases[1], rl_experiment::Phase::kTask);
+  ASSERT_EQ(log.steps.size(), 7u);
+  EXPECT_EQ(log.steps[2].phase, rl_experiment::Phase::kExplore);
+  EXPECT_FLOAT_EQ(log.steps[2].reward, 1.0f);
+  EXPECT_FLOAT_EQ(log.steps[2].rewardSeen, 0.0f);
+  EXPECT_EQ(log.steps[3].phase, rl_experiment::Phase::kTask);
+  EXPECT_FLOAT_EQ(log.steps[3].rewardSeen, 1.0f);
+  EXPECT_EQ(log.checkpoints, (std::vector<long>{0, 3, 6, 7}));
+}
+
+TEST(TrialRunner, EpisodicPhasesRestartEpisodesWithinTheBudget) {
+  Countdown env(3, true);
+  Recorder agent;
+  Collect log;
+  rl_experiment::TrialLimits limits;
+  limits.exploreSteps = 4;
+  limits.taskSteps = 3;
+  const auto s = rl_experiment::TrialRunner(limits).run(env, agent, &log);
+  EXPECT_EQ(s.steps, 7);
+  EXPECT_EQ(agent.calls, "FNNLFNNLF");  // 3 + 3 + 1 steps; the last episode is unfinished
+  EXPECT_EQ(s.episodes, 3);
+  ASSERT_EQ(log.episodes.size(), 3u);
+  EXPECT_FALSE(log.episodes[2].terminal);
+  EXPECT_EQ(log.episodes[1].phase, rl_experiment::Phase::kExplore);  // starts at step 3
+  EXPECT_EQ(log.episodes[2].phase, rl_experiment::Phase::kTask);     // starts at step 6
+}

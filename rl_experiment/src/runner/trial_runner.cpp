@@ -2,31 +2,81 @@
 
 #include <stdexcept>
 
+#include "rl_experiment/runner/agent_probe.h"
+
 namespace rl_experiment {
 
+const char* phaseName(Phase phase) {
+  switch (phase) {
+    case Phase::kExplore:
+      return "explore";
+    case Phase::kTask:
+      return "task";
+    case Phase::kRun:
+      break;
+  }
+  return "run";
+}
+
 TrialRunner::TrialRunner(TrialLimits limits) : limits_(limits) {
-  if (limits.steps < 0 || limits.episodes < 0 || limits.maxSteps < 1) {
+  if (limits.steps < 0 || limits.episodes < 0 || limits.maxSteps < 1 || limits.exploreSteps < 0 ||
+      limits.taskSteps < 0 || limits.checkpointEvery < 0) {
     throw std::invalid_argument(
-        "TrialRunner::TrialRunner(): steps and episodes must be >= 0, maxSteps >= 1");
+        "TrialRunner::TrialRunner(): steps, episodes, exploreSteps, taskSteps and "
+        "checkpointEvery must be >= 0, maxSteps >= 1");
   }
 }
+
+long TrialRunner::plannedSteps(bool episodic) const {
+  if (limits_.phased()) return long(limits_.exploreSteps) + limits_.taskSteps;
+  if (!episodic) return limits_.steps;
+  return long(limits_.episodes) * limits_.maxSteps;
+}
+
+namespace {
+
+// Fills the record's intrinsic parts from the agent, if it reports them.
+void addBreakdown(const rl_common::Agent& agent, StepRecord* rec) {
+  if (const auto b = rewardBreakdownOf(agent)) {
+    rec->hasBreakdown = true;
+    rec->variance = b->variance;
+    rec->novelty = b->novelty;
+    rec->other = b->other;
+  }
+}
+
+}  // namespace
 
 TrialSummary TrialRunner::run(rl_common::Environment& env, rl_common::Agent& agent,
                               TrialObserver* observer) const {
   TrialObserver ignore;
   TrialObserver& obs = observer != nullptr ? *observer : ignore;
-  TrialSummary summary;
   agent.seedExperiences(env.seedExperiences());
+  if (limits_.phased()) return runPhased(env, agent, obs);
 
+  TrialSummary summary;
+  const long every = limits_.checkpointEvery;
+  obs.onPhase(Phase::kRun);
+  if (every > 0) obs.onCheckpoint(0, Phase::kRun, agent, env);
   auto step = [&](int action, int episode, EpisodeRecord& ep) {
-    const float r = env.apply(action);
-    const bool terminal = env.terminal();
-    obs.onStep({summary.steps, episode, action, r, terminal});
+    StepRecord rec;
+    rec.step = summary.steps;
+    rec.episode = episode;
+    rec.action = action;
+    addBreakdown(agent, &rec);
+    obs.beforeStep(env, rec.step, action);
+    rec.reward = env.apply(action);
+    rec.rewardSeen = rec.reward;
+    rec.terminal = env.terminal();
+    obs.onStep(rec);
     ++summary.steps;
-    summary.totalReward += r;
-    ep.reward += r;
+    summary.totalReward += rec.reward;
+    ep.reward += rec.reward;
     ++ep.steps;
-    return r;
+    if (every > 0 && summary.steps % every == 0) {
+      obs.onCheckpoint(summary.steps, Phase::kRun, agent, env);
+    }
+    return rec.reward;
   };
 
   if (!env.isEpisodic()) {
@@ -39,26 +89,101 @@ TrialSummary TrialRunner::run(rl_common::Environment& env, rl_common::Agent& age
       obs.onEpisode(ep);
       summary.episodes = 1;
     }
-    return summary;
+  } else {
+    for (int e = 0; e < limits_.episodes; ++e) {
+      EpisodeRecord ep;
+      ep.episode = e;
+      float r = step(agent.firstAction(env.sensation()), e, ep);
+      while (!env.terminal() && ep.steps < limits_.maxSteps) {
+        r = step(agent.nextAction(r, env.sensation()), e, ep);
+      }
+      if (env.terminal()) {
+        agent.lastAction(r);
+        ep.terminal = true;
+      } else {
+        agent.nextAction(r, env.sensation());  // the original's cut-off: action discarded
+      }
+      obs.onEpisode(ep);
+      ++summary.episodes;
+      env.reset();
+    }
   }
+  if (every > 0 && summary.steps % every != 0) {
+    obs.onCheckpoint(summary.steps, Phase::kRun, agent, env);
+  }
+  summary.exploreReward = 0.0;
+  summary.taskReward = 0.0;
+  return summary;
+}
 
-  for (int e = 0; e < limits_.episodes; ++e) {
-    EpisodeRecord ep;
-    ep.episode = e;
-    float r = step(agent.firstAction(env.sensation()), e, ep);
-    while (!env.terminal() && ep.steps < limits_.maxSteps) {
-      r = step(agent.nextAction(r, env.sensation()), e, ep);
+TrialSummary TrialRunner::runPhased(rl_common::Environment& env, rl_common::Agent& agent,
+                                    TrialObserver& obs) const {
+  TrialSummary summary;
+  const long total = long(limits_.exploreSteps) + limits_.taskSteps;
+  const long every = limits_.checkpointEvery;
+  auto phaseAt = [&](long i) { return i < limits_.exploreSteps ? Phase::kExplore : Phase::kTask; };
+
+  EpisodeRecord ep;
+  bool starting = true;  // the next action starts an episode
+  float seen = 0.0f;     // the reward the agent receives with its next call
+  Phase current = phaseAt(0);
+  setIntrinsicEnabled(agent, current == Phase::kExplore);
+  obs.onPhase(current);
+  if (every > 0) obs.onCheckpoint(0, current, agent, env);
+
+  for (long i = 0; i < total; ++i) {
+    const Phase phase = phaseAt(i);
+    if (phase != current) {
+      current = phase;
+      setIntrinsicEnabled(agent, false);
+      obs.onPhase(current);
     }
-    if (env.terminal()) {
-      agent.lastAction(r);
-      ep.terminal = true;
+    StepRecord rec;
+    rec.step = i;
+    rec.episode = summary.episodes;
+    rec.phase = phase;
+    if (starting) {
+      ep = EpisodeRecord();
+      ep.episode = summary.episodes;
+      ep.phase = phase;
+      rec.action = agent.firstAction(env.sensation());
+      starting = false;
     } else {
-      agent.nextAction(r, env.sensation());  // the original's cut-off: action discarded
+      rec.action = agent.nextAction(seen, env.sensation());
     }
+    addBreakdown(agent, &rec);
+    obs.beforeStep(env, i, rec.action);
+    rec.reward = env.apply(rec.action);
+    rec.rewardSeen = phase == Phase::kExplore ? 0.0f : rec.reward;
+    rec.terminal = env.terminal();
+    seen = rec.rewardSeen;
+    obs.onStep(rec);
+    ++summary.steps;
+    summary.totalReward += rec.reward;
+    (phase == Phase::kExplore ? summary.exploreReward : summary.taskReward) += rec.reward;
+    ep.reward += rec.reward;
+    ++ep.steps;
+    if (env.isEpisodic() && (rec.terminal || ep.steps >= limits_.maxSteps)) {
+      if (rec.terminal) {
+        agent.lastAction(seen);
+        ep.terminal = true;
+      } else {
+        agent.nextAction(seen, env.sensation());  // cut off: action discarded
+      }
+      obs.onEpisode(ep);
+      ++summary.episodes;
+      env.reset();
+      starting = true;
+    }
+    if (every > 0 && summary.steps % every == 0) {
+      obs.onCheckpoint(summary.steps, phase, agent, env);
+    }
+  }
+  if (!starting && total > 0) {  // the unfinished (or non-episodic) episode
     obs.onEpisode(ep);
     ++summary.episodes;
-    env.reset();
   }
+  if (every > 0 && total % every != 0) obs.onCheckpoint(total, current, agent, env);
   return summary;
 }
 

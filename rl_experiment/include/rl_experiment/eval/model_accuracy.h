@@ -1,0 +1,61 @@
+/**
+ * Model accuracy: how far a learned model's next-state predictions are from the true dynamics
+ * (the TEXPLORE-VANIR paper §5.1, Fig. 4).
+ *
+ * For a state-action (s, a) with true next-state distribution P and predicted distribution Q,
+ * the variational (total-variation) distance is
+ *     TV(P, Q) = 1/2 * sum_{s'} |P(s') - Q(s')|,
+ * over the union of both supports; it is 0 for identical distributions and 1 for disjoint ones.
+ * The accuracy of a model is the mean TV over `samples` state-actions drawn uniformly (states
+ * uniformly from the environment's reachable states, actions uniformly), as in the paper
+ * (5000 samples every 25 steps). Distributions are compared on absolute next states; equal
+ * states are merged before comparing. A factored prediction (one distribution per feature, whose
+ * product can have millions of outcomes) is compared without expanding it: with P the true and
+ * Q the predicted distribution,
+ *     sum_{s'} |P(s') - Q(s')| = sum_{s' in supp P} |P(s') - Q(s')| + (|Q| - sum_{s' in supp P}
+ * Q(s')), where |Q| is Q's total mass (1 for a normalised prediction).
+ */
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "rl_common/experience.h"
+#include "rl_common/mdp_model.h"
+#include "rl_common/random.h"
+#include "rl_common/true_model.h"
+
+namespace rl_experiment {
+
+/// A distribution over next states (probabilities need not be merged per state).
+using StateDistribution = std::vector<std::pair<rl_common::State, double>>;
+
+/// 1/2 * L1 distance between two distributions over states, in [0, 1] when both sum to 1.
+double variationalDistance(const StateDistribution& p, const StateDistribution& q);
+
+/// The same between a true distribution `p` and a model's prediction (listed or factored).
+double variationalDistance(const StateDistribution& p, const rl_common::StateActionInfo& q);
+
+/// The true next-state distribution of an outcome list (rewards and terminal flags dropped).
+StateDistribution nextStateDistribution(const std::vector<rl_common::Outcome>& outcomes);
+
+/// Mean variational distance between a learned model and the true dynamics.
+class ModelAccuracy {
+ public:
+  /// `truth` must outlive this object; its reachable states are listed once here. Throws
+  /// std::invalid_argument if there are none or `numActions` < 1.
+  ModelAccuracy(const rl_common::TrueModel& truth, int numActions);
+
+  /// Mean TV over `samples` state-actions drawn with `rng`. Throws std::invalid_argument if
+  /// samples < 1.
+  double evaluate(const rl_common::ModelView& model, rl_common::Random& rng, int samples) const;
+
+  std::size_t numReachableStates() const { return states_.size(); }
+
+ private:
+  const rl_common::TrueModel& truth_;
+  int numActions_;
+  std::vector<rl_common::State> states_;
+};
+
+}  // namespace rl_experiment

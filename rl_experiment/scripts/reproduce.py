@@ -1,0 +1,217 @@
+#!/usr/bin/env python3
+"""The TEXPLORE-VANIR paper's LightWorld experiments (section 5.1, Figs. 4-8), in one command.
+
+Usage: reproduce.py lightworld [--quick] [--out DIR] [--trials N] [--jobs K] [--seed S]
+                               [--rollouts R] [--experiment NAME ...]
+
+Experiments (each agent runs --trials trials through the standalone `experiment` runner):
+  explore-task  1000 exploration steps without external reward, then 3000 task steps acting
+                greedily on the learned model (Figs. 4, 5, 6: model accuracy, task reward,
+                where PRESS was tried)
+  combined      3000 steps with intrinsic and external rewards together (Fig. 7)
+  ablation      TEXPLORE-VANIR with v/n in {1/3, 1/0, 0/3, 0/0}, 5000 steps combined (Fig. 8)
+Agents: TEXPLORE-VANIR (v=1, n=3), TEXPLORE greedy (v=0, n=0) and every other agent the registry
+offers when this runs (`experiment --list-agents`), so comparison agents join as they land.
+--quick uses 4 trials and shorter runs (under 15 minutes on 2 cores). The full run (30
+trials) takes about 3 hours on 2 cores with today's agents, about 5 with every comparison agent. Writes run folders,
+figures (PNG, PDF) per experiment and DIR/results.md with the final numbers and 95% intervals.
+A rerun resumes: finished trials are kept (use a new --out for a fresh run).
+"""
+import argparse
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+PAPER_OPTIMAL_TASK_REWARD = 1800.6  # the paper's optimal policy over the 3000 task steps
+SKIPPED_AGENTS = {
+    "modelbased": "the generic model-based agent; texplore covers it",
+    "savedpolicy": "needs a policy file",
+}
+
+
+def find_experiment():
+    """The runner: $RL_EXPERIMENT, on PATH via rosrun's layout, or next to this script."""
+    if os.environ.get("RL_EXPERIMENT"):
+        return os.environ["RL_EXPERIMENT"]
+    try:
+        out = subprocess.run(["catkin_find", "--first-only", "rl_experiment", "experiment"],
+                             capture_output=True, text=True, check=False).stdout.split()
+        if out:
+            return out[0]
+    except OSError:
+        pass
+    for cand in (os.path.join(HERE, "experiment"),):
+        if os.path.exists(cand):
+            return cand
+    found = shutil.which("experiment")
+    if found:
+        return found
+    sys.exit("reproduce: cannot find the experiment runner; build first (./rl build) or set "
+             "RL_EXPERIMENT")
+
+
+def registry_agents(exe):
+    out = subprocess.run([exe, "--list-agents"], capture_output=True, text=True, check=True)
+    return [line.split("\t")[0] for line in out.stdout.splitlines() if line.strip()]
+
+
+def accepts(exe, args):
+    return subprocess.run([exe] + args + ["--check"], capture_output=True).returncode == 0
+
+
+def agent_variants(exe, rollouts, log):
+    """(label, options) for every agent to compare."""
+    variants = []
+    for name in registry_agents(exe):
+        if name in SKIPPED_AGENTS:
+            log("  skipping agent %s: %s" % (name, SKIPPED_AGENTS[name]))
+            continue
+        if name == "texplore":
+            variants.append(("texplore-vanir", ["--agent", "texplore", "--v", "1", "--n", "3"]))
+            variants.append(("texplore-greedy", ["--agent", "texplore"]))
+        else:
+            variants.append((name, ["--agent", name]))
+    out = []
+    for label, opts in variants:
+        with_rollouts = opts + ["--rollouts", str(rollouts)]
+        if accepts(exe, with_rollouts + ["--env", "lightworld"]):
+            out.append((label, with_rollouts))
+        elif accepts(exe, opts + ["--env", "lightworld"]):
+            out.append((label, opts))
+        else:
+            log("  skipping agent %s: its options are not accepted" % label)
+    return out
+
+
+def ablation_variants(rollouts):
+    out = []
+    for v, n in ((1, 3), (1, 0), (0, 3), (0, 0)):
+        opts = ["--agent", "texplore", "--rollouts", str(rollouts)]
+        if v or n:
+            opts += ["--v", str(v), "--n", str(n)]
+        out.append(("texplore-v%d-n%d" % (v, n), opts))
+    return out
+
+
+def finished_trials(folder):
+    path = os.path.join(folder, "trials.csv")
+    if not os.path.exists(path):
+        return 0
+    with open(path) as f:
+        return max(0, sum(1 for line in f if line.strip()) - 1)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter,
+                                 epilog=__doc__)
+    ap.add_argument("domain", choices=["lightworld"])
+    ap.add_argument("--quick", action="store_true", help="fewer trials and steps (~15 min)")
+    ap.add_argument("--out", default=None, help="results folder (default results/lightworld[-quick])")
+    ap.add_argument("--trials", type=int, default=None, help="trials per agent (30; quick 4)")
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="parallel trials")
+    ap.add_argument("--seed", type=int, default=1, help="run seed (trial seeds derive from it)")
+    ap.add_argument("--rollouts", type=int, default=None,
+                    help="UCT rollouts per step for planning agents (100; quick 50)")
+    ap.add_argument("--experiment", action="append",
+                    choices=["explore-task", "combined", "ablation"],
+                    help="run only these experiments (default: all)")
+    args = ap.parse_args(argv)
+
+    if args.quick:
+        trials, explore, task, combined, ablation = 4, 400, 800, 1000, 1200
+        samples, rollouts = 1000, 50
+    else:
+        trials, explore, task, combined, ablation = 30, 1000, 3000, 3000, 5000
+        samples, rollouts = 5000, 100
+    trials = args.trials or trials
+    rollouts = args.rollouts or rollouts
+    out = args.out or os.path.join("results", "lightworld" + ("-quick" if args.quick else ""))
+    os.makedirs(out, exist_ok=True)
+    exe = find_experiment()
+    start = time.time()
+    logf = open(os.path.join(out, "reproduce.log"), "a")
+
+    def log(text):
+        print(text, flush=True)
+        logf.write(text + "\n")
+        logf.flush()
+
+    log("reproduce lightworld%s: %d trials per agent, %d rollouts per step, %d jobs, seed %d, "
+        "into %s" % (" --quick" if args.quick else "", trials, rollouts, args.jobs, args.seed,
+                     out))
+    agents = agent_variants(exe, rollouts, log)
+    log("agents: " + ", ".join(label for label, _ in agents))
+    common = ["--env", "lightworld", "--trials", str(trials), "--seed", str(args.seed),
+              "--jobs", str(args.jobs), "--eval-samples", str(samples), "--progress", "off"]
+    experiments = [
+        ("explore-task", "Figs. 4-6: %d exploration steps, then %d task steps" % (explore, task),
+         agents, ["--explore-steps", str(explore), "--task-steps", str(task)]),
+        ("combined", "Fig. 7: %d steps, intrinsic and external rewards combined" % combined,
+         agents, ["--steps", str(combined)]),
+        ("ablation", "Fig. 8: TEXPLORE-VANIR v/n ablation, %d steps combined" % ablation,
+         ablation_variants(rollouts), ["--steps", str(ablation)]),
+    ]
+    wanted = set(args.experiment or [e[0] for e in experiments])
+    tables = []
+    failures = 0
+    for name, what, variants, opts in experiments:
+        if name not in wanted:
+            continue
+        log("== %s (%s)" % (name, what))
+        folders = []
+        for label, agent_opts in variants:
+            folder = os.path.join(out, name, label)
+            cmd = [exe] + agent_opts + common + opts + ["--label", label, "--out", folder]
+            if finished_trials(folder) >= trials:
+                log("  %-20s done already" % label)
+                folders.append(folder)
+                continue
+            if os.path.exists(os.path.join(folder, "run.csv")):
+                cmd.append("--resume")
+            t0 = time.time()
+            res = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+            with open(os.path.join(out, name, label + ".log"), "w") as f:
+                f.write(" ".join(cmd) + "\n" + res.stdout)
+            if res.returncode != 0:
+                failures += 1
+                log("  %-20s FAILED (exit %d), see %s.log" % (label, res.returncode,
+                                                             os.path.join(name, label)))
+            else:
+                log("  %-20s %d trials in %.0f s" % (label, trials, time.time() - t0))
+            if finished_trials(folder) > 0:
+                folders.append(folder)
+        if not folders:
+            continue
+        figs = os.path.join(out, name, "figures")
+        res = subprocess.run([sys.executable, os.path.join(HERE, "plot_results.py"), "--out", figs,
+                              "--title", "LightWorld %s" % name] + folders,
+                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        if res.returncode != 0:
+            failures += 1
+            log("  figures FAILED:\n" + res.stdout)
+            continue
+        with open(os.path.join(figs, "results.md")) as f:
+            table = f.read().split("\n", 1)[1]
+        tables.append("## %s\n\n%s\n%s" % (name, what, table))
+        log("  figures in %s" % figs)
+    elapsed = time.time() - start
+    md = ["# LightWorld reproduction%s" % (" (quick)" if args.quick else ""), "",
+          "%d trials per agent, %d UCT rollouts per step, seed %d; run time %.1f min on %d jobs." %
+          (trials, rollouts, args.seed, elapsed / 60, args.jobs), "",
+          "For reference, the paper's optimal policy earns %.1f over the 3000 task steps." %
+          PAPER_OPTIMAL_TASK_REWARD, ""] + tables
+    tmp = os.path.join(out, ".results.md.tmp")
+    with open(tmp, "w") as f:
+        f.write("\n".join(md) + "\n")
+    os.replace(tmp, os.path.join(out, "results.md"))
+    log("\n".join(md))
+    log("results: %s (%.1f min)" % (os.path.join(out, "results.md"), elapsed / 60))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

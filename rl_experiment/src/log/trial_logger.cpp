@@ -1,0 +1,138 @@
+#include "rl_experiment/log/trial_logger.h"
+
+#include <cstdio>
+
+#include "rl_experiment/runner/agent_probe.h"
+
+namespace rl_experiment {
+
+namespace {
+
+std::string numbered(const char* prefix, int trial) {
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%s-%03d.csv", prefix, trial);
+  return buf;
+}
+
+std::string join(const std::string& folder, const std::string& file) {
+  return folder.empty() ? file : folder + "/" + file;
+}
+
+}  // namespace
+
+std::string TrialLogger::stepsFile(int trial) { return numbered("steps", trial); }
+std::string TrialLogger::episodesFile(int trial) { return numbered("episodes", trial); }
+std::string TrialLogger::accuracyFile(int trial) { return numbered("accuracy", trial); }
+std::string TrialLogger::summaryFile(int trial) { return numbered("trial", trial); }
+
+TrialLogger::TrialLogger(const std::string& folder, TrialInfo info, EvalSettings eval,
+                         bool perStepStream, std::ostream* original)
+    : folder_(folder),
+      info_(std::move(info)),
+      eval_(eval),
+      perStepStream_(perStepStream),
+      original_(original),
+      evalRng_(info_.evalSeed) {
+  if (folder_.empty()) return;
+  steps_ = std::make_unique<CsvFile>(
+      join(folder_, stepsFile(info_.trial)),
+      std::vector<std::string>{"trial", "step", "phase", "episode", "action", "reward",
+                               "reward_seen", "variance", "novelty", "other", "target",
+                               "terminal"});
+  episodes_ = std::make_unique<CsvFile>(
+      join(folder_, episodesFile(info_.trial)),
+      std::vector<std::string>{"trial", "episode", "phase", "steps", "reward", "terminal"});
+}
+
+void TrialLogger::beforeStep(const rl_common::Environment& env, long /*step*/, int action) {
+  pendingTarget_ = locationOf(env, action);
+  locations_.add(env, action);
+}
+
+void TrialLogger::onStep(const StepRecord& r) {
+  if (steps_) {
+    const std::string t = std::to_string(info_.trial);
+    steps_->row({t, std::to_string(r.step), phaseName(r.phase), std::to_string(r.episode),
+                 std::to_string(r.action), formatNumber(r.reward), formatNumber(r.rewardSeen),
+                 r.hasBreakdown ? formatNumber(r.variance) : "",
+                 r.hasBreakdown ? formatNumber(r.novelty) : "",
+                 r.hasBreakdown ? formatNumber(r.other) : "", locationName(pendingTarget_),
+                 r.terminal ? "1" : "0"});
+  }
+  pendingTarget_ = Location::kNone;
+  if (original_ != nullptr && perStepStream_) *original_ << r.reward << "\n";
+}
+
+void TrialLogger::onEpisode(const EpisodeRecord& r) {
+  if (episodes_) {
+    episodes_->row({std::to_string(info_.trial), std::to_string(r.episode), phaseName(r.phase),
+                    std::to_string(r.steps), formatNumber(r.reward), r.terminal ? "1" : "0"});
+  }
+  if (original_ != nullptr && !perStepStream_) *original_ << r.reward << std::endl;
+}
+
+void TrialLogger::onCheckpoint(long stepsDone, Phase phase, const rl_common::Agent& agent,
+                               const rl_common::Environment& env) {
+  const auto* truth = dynamic_cast<const rl_common::TrueModel*>(&env);
+  if (truth == nullptr) return;
+  const auto model = learnedModelOf(agent);
+  if (model == nullptr) return;
+  if (!evaluatorTried_) {
+    evaluatorTried_ = true;
+    evaluator_ = std::make_unique<ModelAccuracy>(*truth, env.numActions());
+    if (!folder_.empty()) {
+      accuracy_ = std::make_unique<CsvFile>(
+          join(folder_, accuracyFile(info_.trial)),
+          std::vector<std::string>{"trial", "step", "phase", "variational_distance", "samples"});
+    }
+  }
+  if (!evaluator_) return;
+  const double vd = evaluator_->evaluate(*model, evalRng_, eval_.samples);
+  lastAccuracy_ = vd;
+  if (accuracy_) {
+    accuracy_->row({std::to_string(info_.trial), std::to_string(stepsDone), phaseName(phase),
+                    formatNumber(vd), std::to_string(eval_.samples)});
+  }
+}
+
+std::vector<std::pair<std::string, std::string>> TrialLogger::finish(const TrialSummary& s,
+                                                                     double seconds,
+                                                                     long peakRssKb) {
+  if (original_ != nullptr) original_->flush();
+  std::vector<std::pair<std::string, std::string>> row = {
+      {"trial", std::to_string(info_.trial)},
+      {"label", info_.label},
+      {"agent", info_.agent},
+      {"env", info_.env},
+      {"agent_seed", std::to_string(info_.agentSeed)},
+      {"env_seed", std::to_string(info_.envSeed)},
+      {"eval_seed", std::to_string(info_.evalSeed)},
+      {"steps", std::to_string(s.steps)},
+      {"episodes", std::to_string(s.episodes)},
+      {"total_reward", formatNumber(s.totalReward)},
+      {"explore_reward", formatNumber(s.exploreReward)},
+      {"task_reward", formatNumber(s.taskReward)},
+      {"final_accuracy", lastAccuracy_ ? formatNumber(*lastAccuracy_) : ""},
+  };
+  for (int kind = 0; kind < 2; ++kind) {
+    for (int l = 1; l < kNumLocations; ++l) {
+      row.emplace_back(
+          std::string(kind == 0 ? "press_" : "pickup_") + locationName(static_cast<Location>(l)),
+          std::to_string(locations_.counts[kind][l]));
+    }
+  }
+  row.emplace_back("seconds", formatNumber(seconds));
+  row.emplace_back("steps_per_second", formatNumber(seconds > 0 ? s.steps / seconds : 0.0));
+  row.emplace_back("peak_rss_mb", formatNumber(peakRssKb / 1024.0));
+  if (!folder_.empty()) {
+    std::vector<std::string> names, values;
+    for (const auto& [n, v] : row) {
+      names.push_back(n);
+      values.push_back(v);
+    }
+    writeFileAtomically(join(folder_, summaryFile(info_.trial)), csvLine(names) + csvLine(values));
+  }
+  return row;
+}
+
+}  // namespace rl_experiment

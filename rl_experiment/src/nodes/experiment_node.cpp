@@ -1,0 +1,76 @@
+// The experiment node: `rosrun rl_experiment experiment_node --steps 500 --trials 3 --out DIR`.
+// Runs trials against separately running agent and env nodes (see ExperimentNode). Options also
+// come from ~private parameters (dashes become underscores); the command line wins.
+#include <ros/ros.h>
+
+#include <cstdlib>
+#include <ctime>
+#include <iostream>
+
+#include "rl_common/ros/param_loader.h"
+#include "rl_experiment/ros/experiment_node.h"
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "experiment");
+  rl_experiment::NodeConfig config;
+  rl_common::OptionParser parser("experiment_node", "[--steps N] [--trials N] [--out DIR] ...");
+  parser.value("steps", &config.steps, "steps per trial", rl_common::greaterThan(0));
+  parser.value("trials", &config.trials, "number of trials", rl_common::greaterThan(0));
+  parser.value("seed", &config.seed, "run seed: trial seeds are derived from it");
+  parser.value("out", &config.out,
+               "folder for the logs (auto: a new folder under ROS_HOME/rl_experiment; none: no "
+               "files)");
+  parser.flag("force", &config.force, true, "overwrite the results in --out");
+  parser.value("label", &config.label, "name of this run in figures");
+  parser.value("agent", &config.agent, "the agent node's type (recorded in the logs)");
+  parser.value("env", &config.env, "the env node's environment (recorded in the logs)");
+  parser.value("timeout", &config.timeout, "seconds without a step before a trial fails",
+               rl_common::greaterThan(0.0));
+  try {
+    if (!parser.parse(argc, argv)) {
+      std::cout << parser.help();
+      return 0;
+    }
+    rl_common::loadPrivateParams(parser, ros::NodeHandle("~"));
+    parser.parse(argc, argv);  // the command line wins over parameters
+  } catch (const std::exception& e) {
+    std::cerr << "experiment_node: " << e.what() << "\n(see experiment_node --help)\n";
+    return 2;
+  }
+  if (config.out == "auto") {
+    const char* rosHome = std::getenv("ROS_HOME");
+    const char* home = std::getenv("HOME");
+    const std::string base = rosHome != nullptr ? rosHome
+                             : home != nullptr  ? std::string(home) + "/.ros"
+                                                : std::string("/tmp");
+    char stamp[32];
+    const std::time_t now = std::time(nullptr);
+    std::strftime(stamp, sizeof(stamp), "%Y%m%d-%H%M%S", std::localtime(&now));
+    config.out = base + "/rl_experiment/run-" + stamp;
+  }
+  std::string commandLine;
+  for (int i = 0; i < argc; ++i) commandLine += (i > 0 ? " " : "") + std::string(argv[i]);
+  rl_experiment::ExperimentConfig ec;
+  ec.out = config.out;
+  ec.force = config.force;
+  ec.trials = config.trials;
+  ec.label = config.label;
+  ec.env.seed = config.seed;
+  rl_experiment::Experiment experiment(ec, parser.currentValues(), commandLine);
+  try {
+    experiment.prepare();
+  } catch (const std::exception& e) {
+    ROS_FATAL_STREAM_NAMED("experiment", e.what());
+    std::cerr << "experiment_node: " << e.what() << "\n";
+    return 1;
+  }
+  std::string values;
+  for (const auto& [name, value] : parser.currentValues()) values += " " + name + "=" + value;
+  ROS_INFO_STREAM_NAMED("experiment", "configuration:" << values);
+  rl_experiment::ExperimentNode node(ros::NodeHandle(), config, &experiment);
+  const int failed = node.run();
+  // The last progress message ("finished ...") leaves on the network thread: give it time to
+  // reach the subscribers before the publisher goes away with the node.
+  ros::WallDuration(1.0).sleep();
+  return failed == 0 ? 0 : 1;
+}

@@ -1,0 +1,33 @@
+#include "rl_experiment/runner/agent_probe.h"
+
+#include "rl_agent/agent/model_based_agent.h"
+
+namespace rl_experiment {
+
+std::optional<rl_agent::RewardBreakdown> rewardBreakdownOf(const rl_common::Agent& agent) {
+  if (const auto* source = dynamic_cast<const rl_agent::RewardBreakdownSource*>(&agent)) {
+    return source->lastRewardBreakdown();
+  }
+  return std::nullopt;
+}
+
+bool setIntrinsicEnabled(rl_common::Agent& agent, bool enabled) {
+  if (auto* mb = dynamic_cast<rl_agent::ModelBasedAgent*>(&agent)) {
+    mb->setIntrinsicEnabled(enabled);
+    return true;
+  }
+  return false;
+}
+
+std::shared_ptr<const rl_common::ModelView> learnedModelOf(const rl_common::Agent& agent) {
+  if (const auto* mb = dynamic_cast<const rl_agent::ModelBasedAgent*>(&agent)) {
+    const auto view = mb->modelView();
+    if (view == nullptr) return nullptr;
+    // The inner factored model: predictions without the intrinsic bonuses (the transitions are
+    // the same either way).
+    return std::shared_ptr<const rl_common::ModelView>(view, &view->model());
+  }
+  return nullptr;
+}
+
+}  // namespace rl_experiment

@@ -1,0 +1,197 @@
+#include "rl_experiment/runner/experiment.h"
+
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <set>
+#include <sstream>
+
+#include "rl_experiment/log/csv_file.h"
+
+namespace {
+
+std::string tempDir() {
+  char tmpl[] = "/tmp/rl_experiment_XXXXXX";
+  return ::mkdtemp(tmpl);
+}
+
+bool exists(const std::string& p) {
+  struct stat st;
+  return ::stat(p.c_str(), &st) == 0;
+}
+
+// Parses a command line into a prepared Experiment.
+rl_experiment::Experiment make(const std::vector<std::string>& args) {
+  rl_experiment::ExperimentConfig c;
+  rl_common::OptionParser p("experiment", "");
+  rl_experiment::addExperimentOptions(p, &c);
+  p.parse(args);
+  rl_experiment::finishExperimentConfig(p, &c);
+  return rl_experiment::Experiment(c, p.currentValues(), "test");
+}
+
+int runAll(rl_experiment::Experiment& e) {
+  std::ostringstream out, err;
+  e.prepare();
+  return e.run(out, err);
+}
+
+// Runs a shell command; returns (exit status, stdout + stderr).
+std::pair<int, std::string> shell(const std::string& cmd, bool mergeStderr = true) {
+  std::string out;
+  std::FILE* p = ::popen((mergeStderr ? cmd + " 2>&1" : cmd).c_str(), "r");
+  char buf[4096];
+  while (std::fgets(buf, sizeof(buf), p) != nullptr) out += buf;
+  const int status = ::pclose(p);
+  return {WEXITSTATUS(status), out};
+}
+
+const std::vector<std::string> kQuick = {"--agent", "qlearner", "--env",  "lightworld",
+                                         "--steps", "300",      "--seed", "11"};
+
+std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& more) {
+  a.insert(a.end(), more.begin(), more.end());
+  return a;
+}
+
+}  // namespace
+
+TEST(Experiment, SeedsDifferPerTrialAndComponentAndRepeat) {
+  std::set<std::uint64_t> all;
+  for (int t = 0; t < 30; ++t) {
+    const auto s = rl_experiment::trialSeeds(1, t);
+    all.insert(s.agent);
+    all.insert(s.env);
+    all.insert(s.eval);
+    EXPECT_EQ(rl_experiment::trialSeeds(1, t).agent, s.agent);
+  }
+  EXPECT_EQ(all.size(), 90u);
+  EXPECT_NE(rl_experiment::trialSeeds(2, 0).agent, rl_experiment::trialSeeds(1, 0).agent);
+}
+
+TEST(Experiment, SameSeedSameLogsAndParallelJobsGiveTheSameTrials) {
+  const std::string a = tempDir(), b = tempDir(), c = tempDir();
+  auto e1 = make(with(kQuick, {"--trials", "2", "--out", a}));
+  auto e2 = make(with(kQuick, {"--trials", "2", "--out", b}));
+  auto e3 = make(with(kQuick, {"--trials", "2", "--out", c, "--jobs", "2"}));
+  EXPECT_EQ(runAll(e1), 0);
+  EXPECT_EQ(runAll(e2), 0);
+  EXPECT_EQ(runAll(e3), 0);
+  for (const char* f : {"/steps-000.csv", "/steps-001.csv", "/seeds.csv"}) {
+    EXPECT_EQ(rl_experiment::readFile(a + f), rl_experiment::readFile(b + f)) << f;
+    EXPECT_EQ(rl_experiment::readFile(a + f), rl_experiment::readFile(c + f)) << f;
+  }
+  // Different trials differ.
+  EXPECT_NE(rl_experiment::readFile(a + "/steps-000.csv"),
+            rl_experiment::readFile(a + "/steps-001.csv"));
+  const auto trials = rl_experiment::parseCsv(rl_experiment::readFile(a + "/trials.csv"));
+  ASSERT_EQ(trials.size(), 3u);
+  EXPECT_EQ(trials[2][0], "1");
+  const auto run = rl_experiment::readFile(a + "/run.csv");
+  EXPECT_NE(run.find("suite_version,"), std::string::npos);
+  EXPECT_NE(run.find("run_seed,11"), std::string::npos);
+  EXPECT_NE(run.find("option.agent,qlearner"), std::string::npos);
+  EXPECT_NE(run.find("option.alpha,"), std::string::npos);
+}
+
+TEST(Experiment, NeverOverwritesWithoutForceAndResumesUnfinishedTrials) {
+  const std::string dir = tempDir();
+  auto first = make(with(kQuick, {"--trials", "2", "--out", dir}));
+  ASSERT_EQ(runAll(first), 0);
+  const std::string step0 = rl_experiment::readFile(dir + "/steps-000.csv");
+
+  auto again = make(with(kQuick, {"--trials", "2", "--out", dir}));
+  EXPECT_THROW(again.prepare(), std::runtime_error);
+  EXPECT_EQ(rl_experiment::readFile(dir + "/steps-000.csv"), step0);
+
+  // A killed run: trial 1 unfinished (no summary, half a steps file).
+  std::remove((dir + "/trial-001.csv").c_str());
+  rl_experiment::writeFileAtomically(dir + "/steps-001.csv", "trial,step\n1,0\n");
+  auto other = make(with(kQuick, {"--trials", "2", "--out", dir, "--resume", "--alpha", "0.5"}));
+  EXPECT_THROW(other.prepare(), std::runtime_error);  // different configuration
+  auto resume = make(with(kQuick, {"--trials", "2", "--out", dir, "--resume"}));
+  resume.prepare();
+  EXPECT_EQ(resume.pendingTrials(), std::vector<int>{1});
+  std::ostringstream out, err;
+  EXPECT_EQ(resume.run(out, err), 0);
+  EXPECT_EQ(rl_experiment::readFile(dir + "/steps-000.csv"), step0);
+  EXPECT_TRUE(exists(dir + "/trial-001.csv"));
+  EXPECT_EQ(rl_experiment::parseCsv(rl_experiment::readFile(dir + "/steps-001.csv")).size(), 301u);
+
+  auto force = make(with(kQuick, {"--trials", "1", "--out", dir, "--force"}));
+  ASSERT_EQ(runAll(force), 0);
+  EXPECT_FALSE(exists(dir + "/steps-001.csv"));  // --force removed the old results
+  EXPECT_EQ(rl_experiment::readFile(dir + "/steps-000.csv"), step0);
+}
+
+TEST(Experiment, BadOptionsSayWhatIsValid) {
+  EXPECT_THROW(make({"--agent", "nosuchagent"}), rl_common::OptionError);
+  try {
+    make({"--agent", "nosuchagent"});
+  } catch (const rl_common::OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find("qlearner"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(make({"--format", "xml"}), rl_common::OptionError);
+  EXPECT_THROW(make({"--force"}), rl_common::OptionError);  // needs --out
+  EXPECT_THROW(make({"--format", "original", "--jobs", "2"}), rl_common::OptionError);
+  EXPECT_THROW(make({"--explore-steps", "5", "--steps", "9"}), rl_common::OptionError);
+  EXPECT_THROW(make({"--label", "a,b"}), rl_common::OptionError);
+
+  const auto [status, text] = shell(std::string(EXPERIMENT_BIN) + " --agent nosuchagent");
+  EXPECT_EQ(status, 2);
+  EXPECT_NE(text.find("valid agents"), std::string::npos) << text;
+  const auto [s2, t2] = shell(std::string(EXPERIMENT_BIN) + " --nosuchoption 3");
+  EXPECT_EQ(s2, 2);
+  EXPECT_NE(t2.find("nosuchoption"), std::string::npos) << t2;
+}
+
+TEST(Experiment, OriginalFormatPrintsBareNumbersOnStderr) {
+  const auto [status, text] = shell(std::string(EXPERIMENT_BIN) +
+                                        " --agent qlearner --env lightworld --steps 40 --format "
+                                        "original 2>&1 >/dev/null",
+                                    false);
+  EXPECT_EQ(status, 0);
+  std::istringstream in(text);
+  int n = 0;
+  for (std::string line; std::getline(in, line); ++n) {
+    EXPECT_NO_THROW(std::stod(line)) << line;
+    EXPECT_EQ(line.find_first_not_of("-0123456789.e+"), std::string::npos) << line;
+  }
+  EXPECT_EQ(n, 40);
+}
+
+TEST(Experiment, FigureScriptDrawsFromAFabricatedRunFolder) {
+  const std::string run = tempDir();
+  const std::string figs = run + "/figs";
+  rl_experiment::writeFileAtomically(run + "/run.csv", "name,value\nlabel,fake\nrun_seed,1\n");
+  for (int t = 0; t < 2; ++t) {
+    std::string steps =
+        "trial,step,phase,episode,action,reward,reward_seen,variance,novelty,"
+        "other,target,terminal\n";
+    for (int i = 0; i < 6; ++i) {
+      steps += std::to_string(t) + "," + std::to_string(i) + "," + (i < 3 ? "explore" : "task") +
+               ",0," + (i % 2 ? "5" : "0") + "," + (i == 4 ? "10" : "0") + ",0,0,0,0," +
+               (i % 2 ? "key" : "") + ",0\n";
+    }
+    rl_experiment::writeFileAtomically(run + "/steps-00" + std::to_string(t) + ".csv", steps);
+    rl_experiment::writeFileAtomically(run + "/accuracy-00" + std::to_string(t) + ".csv",
+                                       "trial,step,phase,variational_distance,samples\n" +
+                                           std::to_string(t) + ",0,explore,0.5,10\n" +
+                                           std::to_string(t) + ",3,explore,0.4,10\n");
+    rl_experiment::writeFileAtomically(run + "/trial-00" + std::to_string(t) + ".csv",
+                                       "trial,label,total_reward,task_reward,final_accuracy\n" +
+                                           std::to_string(t) + ",fake,10,10,0.4\n");
+  }
+  const auto [status, text] =
+      shell("/usr/bin/python3 " + std::string(PLOT_SCRIPT) + " --out " + figs + " " + run);
+  ASSERT_EQ(status, 0) << text;
+  for (const char* f : {"/reward.png", "/reward.pdf", "/accuracy.png", "/accuracy.pdf",
+                        "/press.png", "/press.pdf", "/results.md"}) {
+    EXPECT_TRUE(exists(figs + f)) << f << "\n" << text;
+  }
+  const std::string table = rl_experiment::readFile(figs + "/results.md");
+  EXPECT_NE(table.find("| fake |"), std::string::npos) << table;
+  EXPECT_NE(table.find("10.0"), std::string::npos) << table;
+}

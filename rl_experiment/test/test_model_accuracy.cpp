@@ -1,0 +1,95 @@
+#include "rl_experiment/eval/model_accuracy.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+namespace {
+
+using rl_experiment::StateDistribution;
+using rl_experiment::variationalDistance;
+
+// A one-feature chain 0..4: action 0 moves +1 with probability 0.8 (else stays), action 1
+// stays.
+class Chain : public rl_common::TrueModel {
+ public:
+  std::vector<rl_common::Outcome> transitions(const rl_common::State& s, int a) const override {
+    if (a == 1 || s[0] >= 4) return {{s, 0, false, 1.0}};
+    return {{{s[0] + 1}, 0, false, 0.8}, {s, 0, false, 0.2}};
+  }
+  std::vector<rl_common::State> reachableStates() const override {
+    return {{0}, {1}, {2}, {3}, {4}};
+  }
+  void setState(const rl_common::State&) override {}
+};
+
+// A model view that always predicts "stay".
+class Stay : public rl_common::ModelView {
+ public:
+  rl_common::StateActionInfo query(const rl_common::State& s, int) const override {
+    rl_common::StateActionInfo i;
+    i.transitions = {{s, 1.0}};
+    i.known = true;
+    return i;
+  }
+};
+
+// A model view that knows the chain exactly, in factored form.
+class Exact : public rl_common::ModelView {
+ public:
+  explicit Exact(const Chain& c) : c_(c) {}
+  rl_common::StateActionInfo query(const rl_common::State& s, int a) const override {
+    rl_common::StateActionInfo i;
+    i.factored.resize(1);
+    for (const auto& o : c_.transitions(s, a)) i.factored[0].emplace_back(o.next[0], o.probability);
+    i.known = true;
+    return i;
+  }
+
+ private:
+  const Chain& c_;
+};
+
+}  // namespace
+
+TEST(VariationalDistance, HandComputedCases) {
+  const StateDistribution a = {{{1, 0}, 1.0}};
+  const StateDistribution b = {{{2, 0}, 1.0}};
+  const StateDistribution half = {{{1, 0}, 0.5}, {{2, 0}, 0.5}};
+  EXPECT_DOUBLE_EQ(variationalDistance(a, a), 0.0);
+  EXPECT_DOUBLE_EQ(variationalDistance(a, b), 1.0);
+  EXPECT_DOUBLE_EQ(variationalDistance(a, half), 0.5);
+  EXPECT_DOUBLE_EQ(variationalDistance(half, a), 0.5);
+  // Equal states listed twice are merged: {x:.3, x:.2, y:.5} equals half.
+  const StateDistribution split = {{{1, 0}, 0.3}, {{2, 0}, 0.5}, {{1, 0}, 0.2}};
+  EXPECT_NEAR(variationalDistance(split, half), 0.0, 1e-12);
+  // 0.9/0.1 vs 0.6/0.4: 1/2 (0.3 + 0.3).
+  const StateDistribution p = {{{0}, 0.9}, {{1}, 0.1}};
+  const StateDistribution q = {{{0}, 0.6}, {{1}, 0.4}};
+  EXPECT_NEAR(variationalDistance(p, q), 0.3, 1e-12);
+}
+
+TEST(VariationalDistance, FactoredPredictionEqualsItsExpansion) {
+  // Two features, independent: f0 in {0: .7, 1: .3}, f1 in {5: .5, 6: .5}.
+  rl_common::StateActionInfo q;
+  q.factored = {{{0.0f, 0.7}, {1.0f, 0.3}}, {{5.0f, 0.5}, {6.0f, 0.5}}};
+  q.known = true;
+  const StateDistribution truth = {{{0, 5}, 0.6}, {{1, 6}, 0.4}};
+  const StateDistribution expanded = {
+      {{0, 5}, 0.35}, {{0, 6}, 0.35}, {{1, 5}, 0.15}, {{1, 6}, 0.15}};
+  // |.6-.35| + |.4-.15| + .35 + .15 = 1.0 -> 0.5
+  EXPECT_NEAR(variationalDistance(truth, expanded), 0.5, 1e-12);
+  EXPECT_NEAR(variationalDistance(truth, q), 0.5, 1e-12);
+}
+
+TEST(ModelAccuracy, PerfectModelScoresZeroAndStayModelTheExpectedMean) {
+  Chain chain;
+  rl_experiment::ModelAccuracy acc(chain, 2);
+  EXPECT_EQ(acc.numReachableStates(), 5u);
+  rl_common::Random rng(7);
+  EXPECT_NEAR(acc.evaluate(Exact(chain), rng, 2000), 0.0, 1e-12);
+  // "Stay" is wrong only for action 0 in states 0..3, by TV 0.8: mean = 0.8 * (4/5) * (1/2).
+  rl_common::Random rng2(7);
+  EXPECT_NEAR(acc.evaluate(Stay(), rng2, 20000), 0.32, 0.02);
+  EXPECT_THROW(acc.evaluate(Stay(), rng2, 0), std::invalid_argument);
+}
