@@ -23,16 +23,18 @@ struct Expectation {
   bool terminates;  // a random policy reaches a terminal state
   bool stochastic;  // random dynamics or start states under the default options
   std::size_t seeds;
+  bool slow = false;  // milliseconds per step (naoarm renders a camera image): fewer steps
 };
 
 const std::map<std::string, Expectation>& expectations() {
   static const std::map<std::string, Expectation> kExpect = {
-      {"taxi", {true, true, true, 0}},       {"tworooms", {true, true, true, 2}},
-      {"fourrooms", {true, true, true, 0}},  {"energy", {true, true, true, 0}},
-      {"fuelworld", {true, true, true, 4}},  {"mcar", {true, true, true, 4}},
-      {"cartpole", {true, true, true, 4}},   {"car2to7", {true, false, false, 25}},
-      {"car7to2", {true, false, false, 25}}, {"carrandom", {true, false, true, 25}},
-      {"stocks", {false, false, true, 0}},   {"lightworld", {false, false, true, 0}},
+      {"taxi", {true, true, true, 0}},           {"tworooms", {true, true, true, 2}},
+      {"fourrooms", {true, true, true, 0}},      {"energy", {true, true, true, 0}},
+      {"fuelworld", {true, true, true, 4}},      {"mcar", {true, true, true, 4}},
+      {"cartpole", {true, true, true, 4}},       {"car2to7", {true, false, false, 25}},
+      {"car7to2", {true, false, false, 25}},     {"carrandom", {true, false, true, 25}},
+      {"stocks", {false, false, true, 0}},       {"lightworld", {false, false, true, 0}},
+      {"naoarm", {false, false, true, 0, true}},
   };
   return kExpect;
 }
@@ -64,6 +66,8 @@ std::unique_ptr<Environment> make(const std::string& name, std::uint64_t seed,
 class Conformance : public ::testing::TestWithParam<std::string> {
  protected:
   const Expectation& expect() const { return expectations().at(GetParam()); }
+  /// `n` steps, or a twentieth of them for a slow environment.
+  int steps(int n) const { return expect().slow ? n / 20 : n; }
 };
 
 TEST(ConformanceSetup, EveryRegisteredEnvironmentHasExpectations) {
@@ -94,7 +98,7 @@ TEST_P(Conformance, StatesAndRewardsStayInsideTheDeclaredRanges) {
     env->getMinMaxReward(&rmin, &rmax);
     rl_common::Random actions(17);
     ASSERT_TRUE(inRange(env->sensation(), min, max)) << "start state";
-    for (int step = 0; step < 4000; ++step) {
+    for (int step = 0; step < steps(4000); ++step) {
       const float r = env->apply(actions.uniformInt(0, env->numActions() - 1));
       ASSERT_GE(r, rmin) << "step " << step;
       ASSERT_LE(r, rmax) << "step " << step;
@@ -154,7 +158,7 @@ TEST_P(Conformance, TerminalHandlingFollowsTheDefinition) {
   rl_common::Random actions(8);
   EXPECT_FALSE(env->terminal()) << "a start state is terminal";
   int terminals = 0;
-  const int budget = expect().terminates ? 200000 : 5000;
+  const int budget = steps(expect().terminates ? 200000 : 5000);
   for (int step = 0; step < budget && terminals < 3; ++step) {
     env->apply(actions.uniformInt(0, env->numActions() - 1));
     if (env->terminal()) {
@@ -191,12 +195,13 @@ TEST_P(Conformance, SameSeedSameTrajectoryDifferentSeedsDiffer) {
   const auto a = make(GetParam(), 42);
   const auto b = make(GetParam(), 42);
   const auto c = make(GetParam(), 43);
-  const std::vector<State> ta = trajectory(*a, 1000);
-  EXPECT_EQ(ta, trajectory(*b, 1000));
+  const int n = steps(1000);
+  const std::vector<State> ta = trajectory(*a, n);
+  EXPECT_EQ(ta, trajectory(*b, n));
   if (expect().stochastic) {
-    EXPECT_NE(ta, trajectory(*c, 1000));
+    EXPECT_NE(ta, trajectory(*c, n));
   } else {
-    EXPECT_EQ(ta, trajectory(*c, 1000)) << "deterministic environment depends on its seed";
+    EXPECT_EQ(ta, trajectory(*c, n)) << "deterministic environment depends on its seed";
   }
 }
 

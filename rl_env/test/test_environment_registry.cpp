@@ -15,9 +15,9 @@
 namespace {
 
 TEST(EnvironmentRegistry, HasTheOriginalNamesWithDescriptions) {
-  const std::vector<std::string> expected = {"car2to7", "car7to2",   "carrandom", "cartpole",
-                                             "energy",  "fourrooms", "fuelworld", "lightworld",
-                                             "mcar",    "stocks",    "taxi",      "tworooms"};
+  const std::vector<std::string> expected = {
+      "car2to7",    "car7to2", "carrandom", "cartpole", "energy", "fourrooms", "fuelworld",
+      "lightworld", "mcar",    "naoarm",    "stocks",   "taxi",   "tworooms"};
   EXPECT_EQ(rl_env::environmentRegistry().names(), expected);
   for (const std::string& name : expected) {
     EXPECT_FALSE(rl_env::environmentRegistry().description(name).empty()) << name;

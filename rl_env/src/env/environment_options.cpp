@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "nao_interface/env/nao_arm_task.h"
 #include "rl_common/registry.h"
 
 namespace rl_env {
@@ -18,6 +19,8 @@ void addEnvironmentOptions(rl_common::OptionParser& parser, EnvironmentOptions* 
   parser.flag("lag", &o->lag, true, "second-order brake dynamics (car2to7, car7to2, carrandom)");
   parser.flag("nolag", &o->lag, false, "no brake lag (car*, the default)");
   parser.flag("highvar", &o->highvar, true, "high-variance fuel costs (fuelworld)");
+  parser.choice("task", &o->task, nao_interface::naoArmTaskNames(),
+                "reward of the Nao arm task (naoarm): none, pink pixels, foot button, microphone");
 }
 
 void checkEnvironmentOptions(const rl_common::OptionParser& parser, const EnvironmentOptions& o) {
@@ -32,6 +35,7 @@ void checkEnvironmentOptions(const rl_common::OptionParser& parser, const Enviro
       {"lag", {"car2to7", "car7to2", "carrandom"}},
       {"nolag", {"car2to7", "car7to2", "carrandom"}},
       {"highvar", {"fuelworld"}},
+      {"task", {"naoarm"}},
   };
   for (const Rule& r : rules) {
     if (parser.given(r.option) && std::find(r.envs.begin(), r.envs.end(), o.env) == r.envs.end()) {

@@ -1,5 +1,7 @@
 #include "rl_env/env/environment_registry.h"
 
+#include "nao_interface/env/nao_arm_environment.h"
+
 #include "rl_env/env/cart_pole.h"
 #include "rl_env/env/energy_rooms.h"
 #include "rl_env/env/four_rooms.h"
@@ -92,6 +94,16 @@ EnvironmentRegistry makeRegistry() {
         return std::make_unique<LightWorld>(seed, o.stochastic);
       },
       "the TEXPLORE-VANIR paper's 4-room key/lock/door world with light sensors");
+  r.add(
+      "naoarm",
+      [](Options o, std::uint64_t seed) -> Ptr {
+        nao_interface::NaoArmSimConfig config;
+        config.stochastic = o.stochastic;
+        return std::make_unique<nao_interface::NaoArmEnvironment>(
+            config, nao_interface::parseNaoArmTask(o.task), seed);
+      },
+      "the paper's simulated seated Nao moving its right shoulder (8 features, 5 actions); "
+      "--task explore|pink|button|mic");
   return r;
 }
 

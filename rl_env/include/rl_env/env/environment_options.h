@@ -20,10 +20,11 @@ struct EnvironmentOptions {
   int nstocks = 3;                 ///< stocks: stocks per sector
   bool lag = false;                ///< car*: second-order brake dynamics (--lag / --nolag)
   bool highvar = false;            ///< fuelworld: high-variance fuel costs
+  std::string task = "explore";    ///< naoarm: explore, pink, button or mic (--task)
 };
 
 /// Declares --env, --seed, --stochastic, --deterministic, --delay, --nsectors, --nstocks,
-/// --lag, --nolag and --highvar on `parser`, writing into `options`.
+/// --lag, --nolag, --highvar and --task on `parser`, writing into `options`.
 void addEnvironmentOptions(rl_common::OptionParser& parser, EnvironmentOptions* options);
 
 /// Rejects options given for an environment that does not use them (as the original did),

@@ -17,7 +17,7 @@ using EnvironmentRegistry =
     rl_common::Registry<rl_common::Environment, const EnvironmentOptions&, std::uint64_t>;
 
 /// The registry: taxi, tworooms, fourrooms, energy, fuelworld, mcar, cartpole, car2to7,
-/// car7to2, carrandom, stocks, lightworld.
+/// car7to2, carrandom, stocks, lightworld, naoarm.
 const EnvironmentRegistry& environmentRegistry();
 
 /// Builds `options.env` seeded with `options.seed`. Throws std::invalid_argument listing the
