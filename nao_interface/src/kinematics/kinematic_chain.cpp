@@ -75,6 +75,7 @@ KinematicChain KinematicChain::fromUrdfString(const std::string& urdf, const std
       joint.lower = -M_PI;
       joint.upper = M_PI;
     }
+    if (j->limits) joint.velocity = j->limits->velocity;
     chain.joints_.push_back(joint);
     link = model->getLink(j->parent_link_name);
   }

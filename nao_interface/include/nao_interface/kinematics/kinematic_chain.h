@@ -25,6 +25,7 @@ class KinematicChain {
     bool prismatic = false;
     double lower = 0.0;  ///< limits of movable joints
     double upper = 0.0;
+    double velocity = 0.0;  ///< velocity limit (rad/s or m/s), 0 if the URDF gives none
   };
 
   /// Parses `urdfFile` and extracts the chain from `baseLink` to `tipLink`. Throws
