@@ -26,6 +26,7 @@ APT_PACKAGES=(
   colcon python3-colcon-ros python3-colcon-cmake python3-colcon-bash python3-colcon-test-result
   libboost-program-options-dev libgtest-dev libgmock-dev libbenchmark-dev
   libeigen3-dev libnanoflann-dev liburdfdom-dev liburdf-dev libopencv-dev
+  libcv-bridge-dev liburdfdom-tools python3-sensor-msgs
   python3-matplotlib python3-numpy
 )
 
@@ -38,6 +39,12 @@ Usage: ./rl <command> [args]
   run [experiment options]  install, build, then run the default LightWorld experiment
   test                      install, build, run every test (gtest, rostest, lint); prints
                             'N passed, N failed' and exits non-zero on any failure
+  reproduce lightworld [--quick] [options]
+                            install, build, run the paper's LightWorld experiments (Figs. 4-8);
+                            writes results/lightworld[-quick]/ with figures and results.md
+  reproduce nao [--quick] [options]
+                            the paper's Nao arm experiments on the simulated Nao (Figs. 10-14);
+                            writes results/nao[-quick]/ with figures and results.md
   setup                     install the Debian packages the suite needs (apt)
   build                     setup, then build into .build/ (RL_BUILD_DIR overrides)
   exec <program> [args]     run a command inside the built workspace (devel/setup.bash)
@@ -97,13 +104,59 @@ cmd_test() {
   log "running tests"
   # run_tests exits 0 even when tests fail; the verdict comes from the result files.
   cmake --build "$BUILD" --target run_tests -- -j1 >"$BUILD_ROOT/run_tests.log" 2>&1 || true
+  run_tsan_tests "$BUILD/test_results/tsan" >>"$BUILD_ROOT/run_tests.log" 2>&1 || true
   /usr/bin/python3 "$ROOT/tools/test_summary.py" "$BUILD/test_results" ||
     { log "details: $BUILD_ROOT/run_tests.log"; return 1; }
+}
+
+# The multi-threaded tests again, built with ThreadSanitizer: any data race fails them.
+TSAN_TESTS=(rl_agent_test_real_time_planner rl_agent_test_model_based_agent)
+run_tsan_tests() {
+  local results=$1 tsan=$BUILD_ROOT/tsan
+  mkdir -p "$results" "$tsan/devel/lib/python3/dist-packages"
+  log "building the threaded tests with ThreadSanitizer (${TSAN_TESTS[*]})"
+  if [ ! -f "$tsan/build/CMakeCache.txt" ]; then
+    cmake -S "$ROOT" -B "$tsan/build" -DCATKIN_DEVEL_PREFIX="$tsan/devel" \
+      -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCATKIN_WHITELIST_PACKAGES="rl_common;rl_msgs;rl_agent" -DCATKIN_ENABLE_TESTING=ON \
+      -DCMAKE_CXX_FLAGS="-fsanitize=thread" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" \
+      -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=thread" >"$tsan/configure.log" 2>&1 || return 1
+  fi
+  cmake --build "$tsan/build" --target "${TSAN_TESTS[@]}" -- -j"$JOBS" || return 1
+  local t rc xml
+  for t in "${TSAN_TESTS[@]}"; do
+    xml=$results/tsan-$t.xml
+    rm -f "$xml"
+    rc=0
+    TSAN_OPTIONS="halt_on_error=1 exitcode=66" "$tsan/devel/lib/rl_agent/$t" \
+      --gtest_output="xml:$xml" || rc=$?
+    # A race aborts the binary (no results) or fails it after passing tests: record it.
+    if [ "$rc" -ne 0 ] && { [ ! -s "$xml" ] || grep -q 'failures="0"' "$xml"; }; then
+      cat >"$xml" <<XML
+<?xml version="1.0"?>
+<testsuite name="tsan" tests="1" failures="1"><testcase classname="tsan" name="$t">
+<failure message="ThreadSanitizer: exit status $rc (data race?); see .build/run_tests.log"/>
+</testcase></testsuite>
+XML
+    fi
+  done
 }
 
 cmd_exec() {
   source_workspace
   exec "$@"
+}
+
+cmd_reproduce() {
+  cmd_build
+  source_workspace
+  if [ "${1:-}" = nao ]; then
+    shift
+    RL_EXPERIMENT=${RL_EXPERIMENT:-$DEVEL/lib/rl_experiment/experiment} \
+      exec /usr/bin/python3 "$ROOT/nao_interface/scripts/reproduce_nao.py" "$@"
+  fi
+  RL_EXPERIMENT=${RL_EXPERIMENT:-$DEVEL/lib/rl_experiment/experiment} \
+    exec /usr/bin/python3 "$ROOT/rl_experiment/scripts/reproduce.py" "$@"
 }
 
 cmd_run() {
@@ -120,9 +173,10 @@ main() {
     build) cmd_build ;;
     test) cmd_test ;;
     run) cmd_run "$@" ;;
+    reproduce) cmd_reproduce "$@" ;;
     exec) cmd_exec "$@" ;;
     help | -h | --help) usage ;;
-    *) usage >&2; log "unknown command '$cmd'; valid: run, test, setup, build, exec, help"; exit 2 ;;
+    *) usage >&2; log "unknown command '$cmd'; valid: run, reproduce, test, setup, build, exec, help"; exit 2 ;;
   esac
 }
 

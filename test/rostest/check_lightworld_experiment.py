@@ -1,0 +1,64 @@
+#!/usr/bin/env python3
+"""Checks a running lightworld_experiment.launch: waits until the experiment node reports that
+it finished, then asserts that the run folder holds the expected logs and that actions and
+rewards flowed (rl_agent/rl_action, rl_agent/rl_reward_breakdown)."""
+import csv
+import os
+import unittest
+
+import rospy
+import rostest
+from rl_msgs.msg import RLAction, RLRewardBreakdown
+from std_msgs.msg import String
+
+
+class LightWorldExperiment(unittest.TestCase):
+    def setUp(self):
+        self.progress = []
+        self.actions = []
+        self.breakdowns = []
+        rospy.Subscriber("rl_experiment/progress", String, lambda m: self.progress.append(m.data))
+        rospy.Subscriber("rl_agent/rl_action", RLAction, lambda m: self.actions.append(m.action))
+        rospy.Subscriber("rl_agent/rl_reward_breakdown", RLRewardBreakdown,
+                         lambda m: self.breakdowns.append(m))
+
+    def test_logs_and_flow(self):
+        out = rospy.get_param("~out")
+        steps = int(rospy.get_param("~steps"))
+        trials = int(rospy.get_param("~trials"))
+        deadline = rospy.Time.now() + rospy.Duration(100)
+        while not rospy.is_shutdown() and rospy.Time.now() < deadline:
+            if any(p.startswith("finished") for p in self.progress):
+                break
+            rospy.sleep(0.2)
+        finished = [p for p in self.progress if p.startswith("finished")]
+        self.assertTrue(finished, "no 'finished' on rl_experiment/progress; got %s" %
+                        self.progress[-5:])
+        self.assertEqual(finished[-1], "finished: %d/%d trials" % (trials, trials))
+        for t in range(trials):
+            with open(os.path.join(out, "steps-%03d.csv" % t)) as f:
+                rows = list(csv.DictReader(f))
+            self.assertEqual(len(rows), steps, "steps-%03d.csv" % t)
+            self.assertEqual([int(r["step"]) for r in rows], list(range(steps)))
+            actions = {int(r["action"]) for r in rows}
+            self.assertTrue(actions <= set(range(6)), actions)
+            self.assertGreater(len(actions), 1, "the agent always took the same action")
+            # TEXPLORE-VANIR reports its novelty reward for the steps.
+            self.assertTrue(any(r["novelty"] not in ("", "0") for r in rows))
+        with open(os.path.join(out, "trials.csv")) as f:
+            summary = list(csv.DictReader(f))
+        self.assertEqual([int(r["trial"]) for r in summary], list(range(trials)))
+        self.assertTrue(all(int(r["steps"]) == steps for r in summary))
+        with open(os.path.join(out, "run.csv")) as f:
+            run = {r["name"]: r["value"] for r in csv.DictReader(f)}
+        self.assertIn("suite_version", run)
+        self.assertEqual(run["run_seed"], "3")
+        # Actions and rewards went over the topics while we listened.
+        self.assertGreater(len(self.actions), 0)
+        self.assertGreater(len(self.breakdowns), 0)
+        self.assertTrue(all(0 <= a < 6 for a in self.actions))
+
+
+if __name__ == "__main__":
+    rospy.init_node("check_lightworld_experiment")
+    rostest.rosrun("rl_texplore_tests", "lightworld_experiment", LightWorldExperiment)
