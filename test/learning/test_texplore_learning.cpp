@@ -31,13 +31,25 @@ std::unique_ptr<rl_common::Agent> makeTexplore(const rl_common::Environment& env
   return rl_agent::makeAgent(o, env.describe());
 }
 
+std::unique_ptr<rl_common::Agent> makeNamed(const rl_common::Environment& env,
+                                            const std::vector<std::string>& args) {
+  rl_agent::AgentOptions o;
+  rl_common::OptionParser p("test", "");
+  rl_agent::addAgentOptions(p, &o);
+  p.parse(args);
+  rl_agent::applyAgentDefaults(p, &o);
+  rl_agent::checkAgentOptions(p, o);
+  o.seed = 5;
+  return rl_agent::makeAgent(o, env.describe());
+}
+
 std::vector<Episode> runEpisodes(const std::string& name, int episodes, int maxSteps,
-                                 const std::vector<std::string>& agentArgs) {
+                                 const std::vector<std::string>& agentArgs, bool texplore = true) {
   rl_env::EnvironmentOptions eo;
   eo.env = name;
   eo.seed = 3;
   auto env = rl_env::makeEnvironment(eo);
-  auto agent = makeTexplore(*env, agentArgs);
+  auto agent = texplore ? makeTexplore(*env, agentArgs) : makeNamed(*env, agentArgs);
   agent->seedExperiences(env->seedExperiences());
   std::vector<Episode> out;
   for (int e = 0; e < episodes; ++e) {
@@ -97,4 +109,30 @@ TEST(TexploreLearning, VanirLeavesTheFirstLightWorldRoom) {
   }
   EXPECT_FLOAT_EQ(r, 10.0f) << "still in the first room after " << steps << " steps";
   EXPECT_EQ(env->sensation()[4], 1.0f);  // room id
+}
+
+// The original's other agents on the suite's environments (issue 7): mean length of the last
+// 10 episodes against the first 10.
+double meanSteps(const std::vector<Episode>& eps, std::size_t from, std::size_t to) {
+  double sum = 0;
+  for (std::size_t e = from; e < to; ++e) sum += eps[e].steps;
+  return sum / static_cast<double>(to - from);
+}
+
+TEST(OtherAgentsLearning, QLearningSarsaAndDynaLearnTwoRooms) {
+  for (const std::string agent : {"qlearner", "sarsa", "dyna"}) {
+    std::vector<std::string> args{"--agent", agent};
+    if (agent == "dyna") args.insert(args.end(), {"--k", "20"});
+    const auto eps = runEpisodes("tworooms", 150, 500, args, false);
+    const double late = meanSteps(eps, 140, 150);
+    EXPECT_LT(late, 30.0) << agent << " early " << meanSteps(eps, 0, 10);  // optimum: 6-14
+    EXPECT_LT(late, 0.5 * meanSteps(eps, 0, 10)) << agent;
+  }
+}
+
+TEST(OtherAgentsLearning, RmaxLearnsFourRooms) {
+  const auto eps = runEpisodes("fourrooms", 40, 1000, {"--agent", "rmax"}, false);
+  const double late = meanSteps(eps, 30, 40);
+  EXPECT_LT(late, 40.0);
+  for (std::size_t e = 30; e < 40; ++e) EXPECT_TRUE(eps[e].terminal);
 }
