@@ -70,8 +70,8 @@ class UctPlanner : public rl_common::Planner {
     int history = 0;                ///< k, the number of past actions in the key and model input
     bool trackActual = true;        ///< carry the continuous state through discretised rollouts
     float rangeEpsilon = 1e-5f;     ///< tolerance of the feature range check
-    std::size_t maxStates = 20000;  ///< state records kept (least recent evicted)
-    std::size_t maxCachedPredictions = 12000;  ///< cached model predictions (state-actions)
+    std::size_t maxStates = 25000;  ///< state records kept (least recent evicted)
+    std::size_t maxCachedPredictions = 15000;  ///< cached model predictions (state-actions)
   };
 
   /// Throws std::invalid_argument, naming the option, if the configuration is invalid.
