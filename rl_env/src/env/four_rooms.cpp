@@ -73,15 +73,7 @@ std::vector<rl_common::Outcome> FourRooms::transitions(const rl_common::State& s
   return out;
 }
 
-std::vector<rl_common::State> FourRooms::reachableStates() const {
-  std::vector<rl_common::State> out;
-  for (int ns = 0; ns < kSize; ++ns) {
-    for (int ew = 0; ew < kSize; ++ew) {
-      if (grid_.open(ns, ew)) out.push_back({static_cast<float>(ns), static_cast<float>(ew)});
-    }
-  }
-  return out;
-}
+std::vector<rl_common::State> FourRooms::reachableStates() const { return grid_.openCells(); }
 
 void FourRooms::setState(const rl_common::State& s) {
   const auto [ns, ew] = decode(s, "FourRooms::setState()");

@@ -94,4 +94,14 @@ std::pair<int, int> Gridworld::delta(Direction dir) {
   return {0, 0};
 }
 
+std::vector<std::vector<float>> Gridworld::openCells() const {
+  std::vector<std::vector<float>> out;
+  for (int ns = 0; ns < height_; ++ns) {
+    for (int ew = 0; ew < width_; ++ew) {
+      if (open(ns, ew)) out.push_back({static_cast<float>(ns), static_cast<float>(ew)});
+    }
+  }
+  return out;
+}
+
 }  // namespace rl_env

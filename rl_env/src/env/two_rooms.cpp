@@ -105,13 +105,7 @@ std::vector<rl_common::Outcome> TwoRooms::transitions(const rl_common::State& s,
 
 std::vector<rl_common::State> TwoRooms::reachableStates() const {
   requireUndelayed("TwoRooms::reachableStates()");
-  std::vector<rl_common::State> out;
-  for (int ns = 0; ns < kHeight; ++ns) {
-    for (int ew = 0; ew < kWidth; ++ew) {
-      if (grid_.open(ns, ew)) out.push_back({static_cast<float>(ns), static_cast<float>(ew)});
-    }
-  }
-  return out;
+  return grid_.openCells();
 }
 
 void TwoRooms::setState(const rl_common::State& s) {

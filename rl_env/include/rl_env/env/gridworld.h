@@ -29,6 +29,8 @@ class Gridworld {
   bool inside(int ns, int ew) const;
   /// True if (ns, ew) is on the grid and not a solid cell.
   bool open(int ns, int ew) const;
+  /// Every open cell as an (ns, ew) state, row by row: the reachable states of a plain grid.
+  std::vector<std::vector<float>> openCells() const;
 
   /// Adds a thin wall on side `dir` of cell (ns, ew) (and so on the opposite side of the
   /// neighbour). Throws std::out_of_range if the cell is off the grid.
