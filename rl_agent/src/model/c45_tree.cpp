@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -57,58 +58,52 @@ C45Tree::Node::~Node() {
 
 namespace c45_detail {
 
-/// The learner-side instance store: inputs column by column, class ids per instance, and per
-/// input the instances sorted by value (merged lazily before each rebuild).
+/// The learner-side instance store: the instances' rows in the input table, class ids, and per
+/// input the rows sorted by value (merged lazily before each rebuild). The inputs themselves
+/// stay in the table, which the trees fed the same rows share.
 struct InstanceStore {
-  std::size_t numInputs = 0;                      ///< 0 until the first instance
-  std::vector<std::vector<float>> columns;        ///< columns[d][i] = input d of instance i
-  std::vector<float> outputs;                     ///< output of instance i
-  std::vector<std::uint32_t> classOf;             ///< class id of instance i
+  std::size_t count = 0;                          ///< instances
+  std::vector<std::uint32_t> pending;             ///< rows added since the last prepare()
+  std::vector<std::uint32_t> classOf;             ///< class id of the instance at table row r
   std::vector<float> classValue;                  ///< class id -> output value
   std::map<float, std::uint32_t> classIndex;      ///< output value -> class id (== equality)
-  std::vector<std::vector<std::uint32_t>> order;  ///< order[d]: instances sorted by input d
-  std::size_t ordered = 0;                        ///< instances already merged into `order`
-  std::vector<double> xlogx;                      ///< xlogx[c] = c ln c
+  std::vector<std::vector<std::uint32_t>> order;  ///< order[d]: rows sorted by input d, then row
 
-  std::size_t size() const { return outputs.size(); }
+  std::int64_t lastRow = -1;  ///< the highest row added
 
-  void add(const std::vector<float>& input, float output) {
-    if (numInputs == 0) {
-      numInputs = input.size();
-      columns.assign(numInputs, {});
-      order.assign(numInputs, {});
-    }
-    for (std::size_t d = 0; d < numInputs; ++d) columns[d].push_back(input[d]);
+  std::size_t size() const { return count; }
+
+  void add(std::uint32_t row, float output) {
     auto it = classIndex.find(output);
     if (it == classIndex.end()) {
       it = classIndex.emplace(output, static_cast<std::uint32_t>(classValue.size())).first;
       classValue.push_back(output);
     }
-    outputs.push_back(output);
-    classOf.push_back(it->second);
+    if (classOf.size() <= row) classOf.resize(std::size_t{row} + 1, 0);
+    classOf[row] = it->second;
+    pending.push_back(row);
+    lastRow = row;
+    ++count;
   }
 
-  /// Merges the instances added since the last call into the per-input sorted orders and
-  /// extends the c ln c table: O(N + m log m) per input for m new instances.
-  void prepare() {
-    const std::size_t n = size();
-    if (ordered < n) {
-      for (std::size_t d = 0; d < numInputs; ++d) {
-        const std::vector<float>& col = columns[d];
-        auto less = [&col](std::uint32_t a, std::uint32_t b) {
-          return col[a] < col[b] || (col[a] == col[b] && a < b);
-        };
-        std::vector<std::uint32_t>& o = order[d];
-        const std::size_t mid = o.size();
-        for (std::size_t i = ordered; i < n; ++i) o.push_back(static_cast<std::uint32_t>(i));
-        std::sort(o.begin() + static_cast<std::ptrdiff_t>(mid), o.end(), less);
-        std::inplace_merge(o.begin(), o.begin() + static_cast<std::ptrdiff_t>(mid), o.end(), less);
-      }
-      ordered = n;
+  /// Merges the rows added since the last call into the per-input sorted orders: O(N + m log m)
+  /// per input for m new rows. Rows arrive in ascending order, so breaking ties on the row
+  /// keeps the order of arrival.
+  void prepare(const std::vector<std::vector<float>>& columns) {
+    if (pending.empty()) return;
+    if (order.empty()) order.assign(columns.size(), {});
+    for (std::size_t d = 0; d < columns.size(); ++d) {
+      const std::vector<float>& col = columns[d];
+      auto less = [&col](std::uint32_t a, std::uint32_t b) {
+        return col[a] < col[b] || (col[a] == col[b] && a < b);
+      };
+      std::vector<std::uint32_t>& o = order[d];
+      const std::size_t mid = o.size();
+      o.insert(o.end(), pending.begin(), pending.end());
+      std::sort(o.begin() + static_cast<std::ptrdiff_t>(mid), o.end(), less);
+      std::inplace_merge(o.begin(), o.begin() + static_cast<std::ptrdiff_t>(mid), o.end(), less);
     }
-    for (std::size_t c = xlogx.size(); c <= n; ++c) {
-      xlogx.push_back(c == 0 ? 0.0 : static_cast<double>(c) * std::log(static_cast<double>(c)));
-    }
+    pending.clear();
   }
 };
 
@@ -180,13 +175,16 @@ void checkInput(const char* method, const std::vector<float>& input, std::size_t
 /// explicit stack), so the depth of the tree is not bounded by the call stack.
 class Builder {
  public:
-  Builder(const c45_detail::InstanceStore& store, const C45Tree::Config& config,
+  Builder(const c45_detail::InstanceStore& store, const std::vector<std::vector<float>>& columns,
+          const std::vector<double>& xlogx, std::size_t tableSize, const C45Tree::Config& config,
           rl_common::Random& rng)
       : store_(store),
+        columns_(columns),
+        xlogx_(xlogx),
         config_(config),
         rng_(rng),
         localOf_(store.classValue.size(), -1),
-        side_(store.size(), 0),
+        side_(tableSize, 0),
         pool_(std::move(spareBuffers())) {
     spareBuffers().clear();
   }
@@ -328,7 +326,7 @@ class Builder {
   /// with f(x) = x ln x, which is the C4.5 gain over the split information (both times n).
   bool bestSplit(const Lists& lists, Split& best) {
     const std::size_t n = lists.n;
-    const std::vector<double>& f = store_.xlogx;
+    const std::vector<double>& f = xlogx_;
     long double sT = 0.0L;
     for (std::size_t c = 0; c < numLocal_; ++c) sT += f[total_[c]];
     cum_.assign(numLocal_, 0);
@@ -344,9 +342,9 @@ class Builder {
         found = true;
       }
     };
-    for (std::size_t dim = 0; dim < store_.numInputs; ++dim) {
+    for (std::size_t dim = 0; dim < columns_.size(); ++dim) {
       const std::uint32_t* l = lists.row(dim);
-      const std::vector<float>& col = store_.columns[dim];
+      const std::vector<float>& col = columns_[dim];
       if (col[l[0]] == col[l[n - 1]]) continue;  // constant input: no candidate
       std::fill(cum_.begin(), cum_.end(), 0);
       long double sLeft = 0.0L, sRight = sT;
@@ -416,8 +414,8 @@ class Builder {
   /// Splits the sorted lists by the test, keeping the order; only the sides asked for.
   void partition(const Lists& lists, const Split& split, bool wantYes, bool wantNo, Lists& yes,
                  Lists& no) {
-    const std::vector<float>& col = store_.columns[static_cast<std::size_t>(split.dim)];
-    const std::size_t n = lists.n, numRows = store_.numInputs;
+    const std::vector<float>& col = columns_[static_cast<std::size_t>(split.dim)];
+    const std::size_t n = lists.n, numRows = columns_.size();
     const std::uint32_t* ids = lists.row(0);
     for (std::size_t k = 0; k < n; ++k) {
       const float x = col[ids[k]];
@@ -455,6 +453,8 @@ class Builder {
   }
 
   const c45_detail::InstanceStore& store_;
+  const std::vector<std::vector<float>>& columns_;  // the input table's columns
+  const std::vector<double>& xlogx_;
   const C45Tree::Config& config_;
   rl_common::Random& rng_;
   std::vector<int> localOf_;                 // global class id -> local id, -1 if absent
@@ -538,11 +538,46 @@ std::size_t C45Tree::Snapshot::sharedNodes(const Snapshot& other) const {
 }
 
 // ------------------------------------------------------------------------------------------
+// InputTable
+// ------------------------------------------------------------------------------------------
+
+std::uint32_t C45Tree::InputTable::append(const std::vector<float>& row) {
+  checkInput("InputTable::append()", row, numInputs());
+  if (size_ >= std::numeric_limits<std::uint32_t>::max()) {
+    throw std::invalid_argument("C45Tree::InputTable::append(): table full");
+  }
+  if (columns_.empty()) columns_.assign(row.size(), {});
+  for (std::size_t d = 0; d < row.size(); ++d) columns_[d].push_back(row[d]);
+  return static_cast<std::uint32_t>(size_++);
+}
+
+std::vector<float> C45Tree::InputTable::row(std::uint32_t id) const {
+  if (id >= size_) {
+    throw std::out_of_range("C45Tree::InputTable::row(): row " + std::to_string(id) + " of " +
+                            std::to_string(size_));
+  }
+  std::vector<float> out(columns_.size());
+  for (std::size_t d = 0; d < out.size(); ++d) out[d] = columns_[d][id];
+  return out;
+}
+
+void C45Tree::InputTable::prepareXlogx(std::size_t n) {
+  for (std::size_t c = xlogx_.size(); c <= n; ++c) {
+    xlogx_.push_back(c == 0 ? 0.0 : static_cast<double>(c) * std::log(static_cast<double>(c)));
+  }
+}
+
+// ------------------------------------------------------------------------------------------
 // C45Tree
 // ------------------------------------------------------------------------------------------
 
-C45Tree::C45Tree(const Config& config, std::uint64_t seed)
-    : config_(config), rng_(seed), store_(std::make_shared<Store>()) {
+C45Tree::C45Tree(const Config& config, std::uint64_t seed, std::shared_ptr<InputTable> inputs)
+    : config_(config),
+      rng_(seed),
+      inputs_(std::move(inputs)),
+      ownsInputs_(inputs_ == nullptr),
+      store_(std::make_shared<Store>()) {
+  if (!inputs_) inputs_ = std::make_shared<InputTable>();
   if (!(config.featPct >= 0.0 && config.featPct <= 1.0)) {
     throw std::invalid_argument("C45Tree::C45Tree(): featPct must be in [0, 1], got " +
                                 std::to_string(config.featPct));
@@ -557,7 +592,7 @@ C45Tree::C45Tree(const Config& config, std::uint64_t seed)
   }
 }
 
-C45Tree::Snapshot C45Tree::snapshot() const { return Snapshot(root_, store_->numInputs); }
+C45Tree::Snapshot C45Tree::snapshot() const { return Snapshot(root_, inputs_->numInputs()); }
 
 Distribution C45Tree::predict(const std::vector<float>& input) const {
   return snapshot().predict(input);
@@ -576,7 +611,7 @@ bool C45Tree::addInstances(const std::vector<std::vector<float>>& inputs,
                                 " inputs but " + std::to_string(outputs.size()) + " outputs");
   }
   if (inputs.empty()) return false;
-  std::size_t numInputs = store_->numInputs;
+  std::size_t numInputs = inputs_->numInputs();
   for (std::size_t k = 0; k < inputs.size(); ++k) {
     checkInput("addInstance()", inputs[k], numInputs);
     if (std::isnan(outputs[k])) {
@@ -584,21 +619,56 @@ bool C45Tree::addInstances(const std::vector<std::vector<float>>& inputs,
     }
     numInputs = inputs[k].size();
   }
+  // Copy-on-write: a copied C45Tree shares its own table until one of the copies learns.
+  if (ownsInputs_ && inputs_.use_count() > 1) inputs_ = std::make_shared<InputTable>(*inputs_);
+  std::vector<std::uint32_t> rows;
+  rows.reserve(inputs.size());
+  for (const auto& x : inputs) rows.push_back(inputs_->append(x));
+  return learn(rows, outputs);
+}
+
+bool C45Tree::addRows(const std::vector<std::uint32_t>& rows, const std::vector<float>& outputs) {
+  if (rows.size() != outputs.size()) {
+    throw std::invalid_argument("C45Tree::addRows(): " + std::to_string(rows.size()) +
+                                " rows but " + std::to_string(outputs.size()) + " outputs");
+  }
+  std::int64_t last = store_->lastRow;
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    if (rows[k] >= inputs_->size() || static_cast<std::int64_t>(rows[k]) <= last) {
+      throw std::invalid_argument("C45Tree::addRows(): row " + std::to_string(rows[k]) +
+                                  " is not a new row of the table (" +
+                                  std::to_string(inputs_->size()) + " rows, last added " +
+                                  std::to_string(last) + ")");
+    }
+    if (std::isnan(outputs[k])) throw std::invalid_argument("C45Tree::addRows(): NaN output");
+    last = rows[k];
+  }
+  return learn(rows, outputs);
+}
+
+bool C45Tree::learn(const std::vector<std::uint32_t>& rows, const std::vector<float>& outputs) {
+  if (rows.empty()) return false;
   // Copy-on-write: a copied C45Tree shares the store until one of the copies learns.
   if (store_.use_count() > 1) store_ = std::make_shared<Store>(*store_);
 
   // The rule is checked against the tree as it was before these instances.
+  const std::vector<std::vector<float>>& columns = inputs_->columns_;
   bool rebuild = root_ == nullptr;
-  for (std::size_t k = 0; k < inputs.size(); ++k) {
-    store_->add(inputs[k], outputs[k]);
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    store_->add(rows[k], outputs[k]);
     if (!rebuild) {
-      const Node* leaf = findLeaf(root_.get(), inputs[k].data());
+      const Node* leaf = root_.get();
+      while (!leaf->isLeaf()) {
+        const float x = columns[static_cast<std::size_t>(leaf->dim)][rows[k]];
+        leaf = leaf->test(x) ? leaf->yes.get() : leaf->no.get();
+      }
       rebuild = probabilityOf(leaf->dist, outputs[k]) < config_.rebuildThreshold;
     }
   }
   if (!rebuild) return false;
-  store_->prepare();
-  root_ = Builder(*store_, config_, rng_).build(root_);
+  store_->prepare(columns);
+  inputs_->prepareXlogx(store_->size());
+  root_ = Builder(*store_, columns, inputs_->xlogx_, inputs_->size(), config_, rng_).build(root_);
   return true;
 }
 

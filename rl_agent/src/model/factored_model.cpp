@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace rl_agent {
 
@@ -12,8 +13,9 @@ namespace {
 constexpr float kUnknownReward = -0.001f;
 
 RandomForest makeForest(const FactoredModel::Config& c, std::uint64_t seed, const char* stream,
-                        std::uint64_t index) {
-  return RandomForest(c.forest, rl_common::Random::deriveSeed(seed, stream, index));
+                        std::uint64_t index, std::shared_ptr<C45Tree::InputTable> inputs) {
+  return RandomForest(c.forest, rl_common::Random::deriveSeed(seed, stream, index),
+                      std::move(inputs));
 }
 
 std::shared_ptr<const FactoredModel::Config> checked(const FactoredModel::Config& c) {
@@ -35,10 +37,11 @@ std::shared_ptr<const FactoredModel::Config> checked(const FactoredModel::Config
 
 FactoredModel::FactoredModel(const Config& config, std::uint64_t seed)
     : config_(checked(config)),
-      reward_(makeForest(config, seed, "reward", 0)),
-      terminal_(makeForest(config, seed, "terminal", 0)) {
+      inputs_(std::make_shared<C45Tree::InputTable>()),
+      reward_(makeForest(config, seed, "reward", 0, inputs_)),
+      terminal_(makeForest(config, seed, "terminal", 0, inputs_)) {
   for (std::size_t j = 0; j < config.featMin.size(); ++j) {
-    features_.push_back(makeForest(config, seed, "feature", j));
+    features_.push_back(makeForest(config, seed, "feature", j, inputs_));
   }
 }
 
@@ -59,14 +62,15 @@ bool FactoredModel::update(const std::vector<rl_common::Experience>& experiences
     }
     x.assign(e.s.begin(), e.s.end());
     for (int a = 0; a < config_->numActions; ++a) x.push_back(a == e.action ? 1.0f : 0.0f);
+    const std::uint32_t row = inputs_->append(x);  // stored once for every forest
     if (!e.terminal) {
       for (std::size_t j = 0; j < d; ++j) {
         const float out = config_->relativeTransitions ? e.next[j] - e.s[j] : e.next[j];
-        changed |= features_[j].addInstance(x, out);
+        changed |= features_[j].addRow(row, out);
       }
     }
-    changed |= reward_.addInstance(x, e.reward);
-    if (config_->episodic) changed |= terminal_.addInstance(x, e.terminal ? 1.0f : 0.0f);
+    changed |= reward_.addRow(row, e.reward);
+    if (config_->episodic) changed |= terminal_.addRow(row, e.terminal ? 1.0f : 0.0f);
     ++experiences_;
   }
   return changed;

@@ -123,8 +123,11 @@ double RandomForest::Snapshot::variance(const std::vector<float>& input) const {
 // RandomForest
 // ------------------------------------------------------------------------------------------
 
-RandomForest::RandomForest(const Config& config, std::uint64_t seed)
-    : config_(config), rng_(rl_common::Random::deriveSeed(seed, "forest_sampling")) {
+RandomForest::RandomForest(const Config& config, std::uint64_t seed,
+                           std::shared_ptr<C45Tree::InputTable> inputs)
+    : config_(config),
+      rng_(rl_common::Random::deriveSeed(seed, "forest_sampling")),
+      inputs_(inputs ? std::move(inputs) : std::make_shared<C45Tree::InputTable>()) {
   if (config.numTrees < 1) {
     throw std::invalid_argument("RandomForest::RandomForest(): numTrees must be >= 1, got " +
                                 std::to_string(config.numTrees));
@@ -139,7 +142,8 @@ RandomForest::RandomForest(const Config& config, std::uint64_t seed)
     if (config.combination == Combination::Separate && i == 0) treeConfig.featPct = 0.0;
     // Throws (C45Tree::C45Tree()) on a bad tree configuration.
     trees_.emplace_back(treeConfig,
-                        rl_common::Random::deriveSeed(seed, "c45_tree", static_cast<unsigned>(i)));
+                        rl_common::Random::deriveSeed(seed, "c45_tree", static_cast<unsigned>(i)),
+                        inputs_);
   }
   accuracy_.assign(trees_.size(), 0.0);
 }
@@ -153,15 +157,15 @@ RandomForest::Snapshot RandomForest::snapshot() const {
   return s;
 }
 
-void RandomForest::checkInstance(const char* method, const std::vector<float>& input,
-                                 float output) const {
+void RandomForest::checkInstance(const char* method, const std::vector<float>& input, float output,
+                                 std::size_t expected) {
   if (input.empty()) {
     throw std::invalid_argument(std::string("RandomForest::") + method + ": empty input");
   }
-  if (numInputs_ != 0 && input.size() != numInputs_) {
+  if (expected != 0 && input.size() != expected) {
     throw std::invalid_argument(std::string("RandomForest::") + method + ": input has " +
                                 std::to_string(input.size()) + " values, expected " +
-                                std::to_string(numInputs_));
+                                std::to_string(expected));
   }
   for (float x : input) {
     if (std::isnan(x)) {
@@ -181,7 +185,6 @@ std::vector<std::size_t> RandomForest::sampleTrees(const std::vector<float>& inp
     accuracy_[i] = accuracy_[i] * t / (t + 1.0) + hit / (t + 1.0);
   }
   ++instances_;
-  numInputs_ = input.size();
 
   std::vector<std::size_t> chosen;
   const bool separate = config_.combination == Combination::Separate;
@@ -197,10 +200,27 @@ std::vector<std::size_t> RandomForest::sampleTrees(const std::vector<float>& inp
 }
 
 bool RandomForest::addInstance(const std::vector<float>& input, float output) {
-  checkInstance("addInstance()", input, output);
+  checkInstance("addInstance()", input, output, inputs_->numInputs());
+  const std::vector<std::size_t> chosen = sampleTrees(input, output);
+  const std::uint32_t row = inputs_->append(input);
+  lastRow_ = row;
+  bool changed = false;
+  for (std::size_t i : chosen) changed = trees_[i].addRows({row}, {output}) || changed;
+  return changed;
+}
+
+bool RandomForest::addRow(std::uint32_t row, float output) {
+  if (row >= inputs_->size() || static_cast<std::int64_t>(row) <= lastRow_) {
+    throw std::invalid_argument(
+        "RandomForest::addRow(): row " + std::to_string(row) + " is not a new row of the table (" +
+        std::to_string(inputs_->size()) + " rows, last learned " + std::to_string(lastRow_) + ")");
+  }
+  const std::vector<float> input = inputs_->row(row);
+  checkInstance("addRow()", input, output, 0);
+  lastRow_ = row;
   bool changed = false;
   for (std::size_t i : sampleTrees(input, output)) {
-    changed = trees_[i].addInstance(input, output) || changed;
+    changed = trees_[i].addRows({row}, {output}) || changed;
   }
   return changed;
 }
@@ -212,31 +232,28 @@ bool RandomForest::addInstances(const std::vector<std::vector<float>>& inputs,
                                 " inputs but " + std::to_string(outputs.size()) + " outputs");
   }
   // Validate everything first so that a bad instance leaves the forest untouched.
-  const std::size_t before = numInputs_;
-  try {
-    for (std::size_t k = 0; k < inputs.size(); ++k) {
-      checkInstance("addInstances()", inputs[k], outputs[k]);
-      numInputs_ = inputs[k].size();  // later instances must match the first
-    }
-  } catch (...) {
-    numInputs_ = before;
-    throw;
+  std::size_t expected = inputs_->numInputs();
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    checkInstance("addInstances()", inputs[k], outputs[k], expected);
+    expected = inputs[k].size();  // later instances must match the first
   }
-  numInputs_ = before;
   // Accuracies are scored against the trees as they were before the batch; each tree then
   // learns its share in one call (at most one rebuild per tree).
-  std::vector<std::vector<std::vector<float>>> treeInputs(trees_.size());
+  std::vector<std::vector<std::uint32_t>> treeRows(trees_.size());
   std::vector<std::vector<float>> treeOutputs(trees_.size());
   for (std::size_t k = 0; k < inputs.size(); ++k) {
-    for (std::size_t i : sampleTrees(inputs[k], outputs[k])) {
-      treeInputs[i].push_back(inputs[k]);
+    const std::vector<std::size_t> chosen = sampleTrees(inputs[k], outputs[k]);
+    const std::uint32_t row = inputs_->append(inputs[k]);
+    lastRow_ = row;
+    for (std::size_t i : chosen) {
+      treeRows[i].push_back(row);
       treeOutputs[i].push_back(outputs[k]);
     }
   }
   bool changed = false;
   for (std::size_t i = 0; i < trees_.size(); ++i) {
-    if (!treeInputs[i].empty()) {
-      changed = trees_[i].addInstances(treeInputs[i], treeOutputs[i]) || changed;
+    if (!treeRows[i].empty()) {
+      changed = trees_[i].addRows(treeRows[i], treeOutputs[i]) || changed;
     }
   }
   return changed;

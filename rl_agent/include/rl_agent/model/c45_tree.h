@@ -21,6 +21,10 @@
  * Nodes are immutable and shared: snapshot() returns a cheap, thread-safe view that keeps
  * predicting from the tree as it was while the tree goes on learning, so a planner can read a
  * model that a learner thread is updating without copying it. Memory grows with the data.
+ *
+ * Trees fed the same inputs (a forest's trees, a factored model's forests) can share one
+ * append-only InputTable: each tree then stores only row ids, its per-input sort orders and
+ * class ids, not its own copy of every input row. A tree built without a table owns one.
  */
 #pragma once
 
@@ -43,6 +47,29 @@ class C45Tree {
   };
 
   struct Node;  ///< immutable tree node (defined in the .cpp)
+
+  /// Append-only table of input rows shared by the trees that learn from them. Only the
+  /// learning side touches it (snapshots never do), so all trees sharing one table must learn
+  /// on the same thread.
+  class InputTable {
+   public:
+    /// Appends a row and returns its id (ids count up from 0). Throws std::invalid_argument
+    /// on an empty row, a NaN, or a length differing from the first row's.
+    std::uint32_t append(const std::vector<float>& row);
+    std::size_t size() const { return size_; }
+    /// Row length (0 while the table is empty).
+    std::size_t numInputs() const { return columns_.size(); }
+    /// Row `id` (throws std::out_of_range).
+    std::vector<float> row(std::uint32_t id) const;
+
+   private:
+    friend class C45Tree;
+    /// Extends xlogx_ up to n.
+    void prepareXlogx(std::size_t n);
+    std::vector<std::vector<float>> columns_;  ///< columns_[d][id] = input d of row id
+    std::size_t size_ = 0;
+    std::vector<double> xlogx_;  ///< xlogx_[c] = c ln c (the gain ratio's counts)
+  };
 
   /// An immutable view of the tree: cheap to copy, safe to read from any thread.
   class Snapshot {
@@ -72,8 +99,10 @@ class C45Tree {
     std::size_t numInputs_ = 0;
   };
 
-  /// `seed` seeds the tree's own random source (split skipping).
-  C45Tree(const Config& config, std::uint64_t seed);
+  /// `seed` seeds the tree's own random source (split skipping). With `inputs` the tree keeps
+  /// its instances' inputs in that shared table (copies of the tree share it too); without,
+  /// it owns a table of its own (copied on write, so copies learn independently).
+  C45Tree(const Config& config, std::uint64_t seed, std::shared_ptr<InputTable> inputs = nullptr);
 
   /// Adds one instance with the incremental rule. Returns true if the tree changed.
   /// Throws std::invalid_argument if the input length differs from earlier instances.
@@ -81,6 +110,11 @@ class C45Tree {
   /// Adds many instances, rebuilding at most once (if any of them triggers the rule).
   bool addInstances(const std::vector<std::vector<float>>& inputs,
                     const std::vector<float>& outputs);
+  /// Adds instances whose inputs are rows already in the tree's table (see addInstances()).
+  /// Rows must come in ascending order, each above every row the tree has (ties between equal
+  /// inputs break on the row id, i.e. on the order of arrival). Throws std::invalid_argument
+  /// otherwise, or on a NaN output; a bad batch leaves the tree untouched.
+  bool addRows(const std::vector<std::uint32_t>& rows, const std::vector<float>& outputs);
 
   /// Same as snapshot().predict(input).
   Distribution predict(const std::vector<float>& input) const;
@@ -88,11 +122,16 @@ class C45Tree {
 
   std::size_t numInstances() const;
   const Config& config() const { return config_; }
+  /// The table holding the inputs (the shared one, or the tree's own).
+  const InputTable& inputs() const { return *inputs_; }
 
  private:
-  struct Store;  ///< the instances, owned by the learning side only
+  struct Store;  ///< the instances' ids, orders and classes, owned by the learning side only
+  bool learn(const std::vector<std::uint32_t>& rows, const std::vector<float>& outputs);
   Config config_;
   rl_common::Random rng_;
+  std::shared_ptr<InputTable> inputs_;
+  bool ownsInputs_ = false;  ///< the table is this tree's own (copy it on write)
   std::shared_ptr<Store> store_;
   std::shared_ptr<const Node> root_;
 };

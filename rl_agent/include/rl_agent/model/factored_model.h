@@ -23,6 +23,9 @@
  * + D_terminal) / (d + 2).
  *
  * view() is cheap: it copies the forests' snapshots (shared, immutable trees).
+ *
+ * All forests see the same input x, so they share one input table: each x is stored once,
+ * the trees keep only row ids into it (the instance storage dominates the agent's memory).
  */
 #pragma once
 
@@ -73,6 +76,11 @@ class FactoredModel : public rl_common::MDPModel {
 
   /// Throws std::invalid_argument on an inconsistent configuration.
   FactoredModel(const Config& config, std::uint64_t seed);
+  /// Move-only: the forests share the input table.
+  FactoredModel(const FactoredModel&) = delete;
+  FactoredModel& operator=(const FactoredModel&) = delete;
+  FactoredModel(FactoredModel&&) = default;
+  FactoredModel& operator=(FactoredModel&&) = default;
 
   bool update(const std::vector<rl_common::Experience>& experiences) override;
   std::shared_ptr<const rl_common::ModelView> view() const override { return factoredView(); }
@@ -83,6 +91,7 @@ class FactoredModel : public rl_common::MDPModel {
 
  private:
   std::shared_ptr<const Config> config_;
+  std::shared_ptr<C45Tree::InputTable> inputs_;  ///< x of every experience (before the forests)
   std::vector<RandomForest> features_;
   RandomForest reward_;
   RandomForest terminal_;

@@ -18,10 +18,14 @@
  *   KL(P_i || P_j) = sum_{o: P_i(o) > 0} P_i(o) ln(P_i(o) / P'_j(o)),
  *   P'_j(o) = P_j(o) if non-zero, else 0.01.
  * It is 0 when all trees agree. A forest of one tree has D = 0.
+ *
+ * The trees keep their inputs in one shared C45Tree::InputTable (the forest's own, or one
+ * shared with other forests fed the same inputs), so each input row is stored once.
  */
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -62,13 +66,25 @@ class RandomForest {
     Combination combination_ = Combination::Average;
   };
 
-  /// `seed` seeds the forest's sampling; each tree gets its own derived stream.
-  RandomForest(const Config& config, std::uint64_t seed);
+  /// `seed` seeds the forest's sampling; each tree gets its own derived stream. The trees
+  /// keep their inputs in `inputs` if given (shared with whoever else appends to it, all on
+  /// one learning thread), else in a table of the forest's own.
+  RandomForest(const Config& config, std::uint64_t seed,
+               std::shared_ptr<C45Tree::InputTable> inputs = nullptr);
+  /// Move-only: the trees share the table, so a copy could not learn independently.
+  RandomForest(const RandomForest&) = delete;
+  RandomForest& operator=(const RandomForest&) = delete;
+  RandomForest(RandomForest&&) = default;
+  RandomForest& operator=(RandomForest&&) = default;
 
-  /// Trains on one instance; returns true if any tree changed.
+  /// Trains on one instance (appending its input to the table); returns true if any tree
+  /// changed.
   bool addInstance(const std::vector<float>& input, float output);
   bool addInstances(const std::vector<std::vector<float>>& inputs,
                     const std::vector<float>& outputs);
+  /// Trains on one instance whose input is row `row` of the table, which must be newer than
+  /// every row the forest has learned. Same as addInstance() with that row's input.
+  bool addRow(std::uint32_t row, float output);
 
   Snapshot snapshot() const;
   Distribution predict(const std::vector<float>& input) const { return snapshot().predict(input); }
@@ -79,18 +95,23 @@ class RandomForest {
   const C45Tree& tree(std::size_t i) const { return trees_.at(i); }
   /// The trees' running accuracies acc_i.
   const std::vector<double>& accuracies() const { return accuracy_; }
+  /// The table holding the trees' inputs.
+  const C45Tree::InputTable& inputs() const { return *inputs_; }
 
  private:
-  void checkInstance(const char* method, const std::vector<float>& input, float output) const;
+  /// Throws unless `input` has `expected` values (any if 0) and input and output are not NaN.
+  static void checkInstance(const char* method, const std::vector<float>& input, float output,
+                            std::size_t expected);
   /// Updates acc_i for an instance (before training on it) and returns the trees that get it.
   std::vector<std::size_t> sampleTrees(const std::vector<float>& input, float output);
 
   Config config_;
   rl_common::Random rng_;
+  std::shared_ptr<C45Tree::InputTable> inputs_;
   std::vector<C45Tree> trees_;
   std::vector<double> accuracy_;
   std::size_t instances_ = 0;
-  std::size_t numInputs_ = 0;  ///< input length (0 until the first instance)
+  std::int64_t lastRow_ = -1;  ///< the newest table row learned
 };
 
 /// The KL term above for two distributions (with the 0.01 epsilon), in nats. Throws
