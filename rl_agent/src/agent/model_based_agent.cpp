@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <stdexcept>
 
 #include "rl_agent/agent/boltzmann_selector.h"
@@ -372,14 +373,38 @@ std::shared_ptr<const rl_common::ModelView> ModelBasedAgent::learnedModelView() 
 }
 
 void ModelBasedAgent::savePolicy(const std::string& filename) {
-  if (dp_ == nullptr || filename.empty()) return;
+  if (filename.empty()) return;
+  const std::size_t d = task_.minFeatures.size();
   PolicyFile::Table table;
-  for (const auto& s : dp_->expandedStates()) {
-    if (s.size() != task_.minFeatures.size()) continue;
-    const std::vector<double> q = dp_->qValues(s);
-    table.emplace(s, std::vector<float>(q.begin(), q.end()));
+  if (dp_ != nullptr) {
+    for (const auto& s : dp_->expandedStates()) {
+      if (s.size() != d) continue;
+      const std::vector<double> q = dp_->qValues(s);
+      table.emplace(s, std::vector<float>(q.begin(), q.end()));
+    }
+  } else {
+    // UCT: every state of the planner's table. With --history a state has a record per action
+    // history; the file (keyed by state alone) gets the most visited one's values.
+    std::map<rl_common::State, long> visitsOf;
+    const auto collect = [&](const UctPlanner& uct) {
+      uct.forEachRecord([&](const rl_common::State& key, const std::vector<double>& q, long n) {
+        if (key.size() < d || static_cast<int>(q.size()) != task_.numActions) return;
+        rl_common::State s(key.begin(), key.begin() + static_cast<std::ptrdiff_t>(d));
+        const auto it = visitsOf.find(s);
+        if (it != visitsOf.end() && it->second >= n) return;
+        visitsOf[s] = n;
+        table[s] = std::vector<float>(q.begin(), q.end());
+      });
+    };
+    if (realTime_) {
+      realTime_->withPlanner([&](rl_common::Planner& p) { collect(static_cast<UctPlanner&>(p)); });
+    } else if (uct_ != nullptr) {
+      collect(*uct_);
+    } else {
+      return;
+    }
   }
-  PolicyFile::write(filename, static_cast<int>(task_.minFeatures.size()), task_.numActions, table);
+  PolicyFile::write(filename, static_cast<int>(d), task_.numActions, table);
 }
 
 }  // namespace rl_agent

@@ -183,6 +183,12 @@ std::vector<double> UctPlanner::qValues(const State& s) const {
   return r ? r->q : std::vector<double>();
 }
 
+void UctPlanner::forEachRecord(
+    const std::function<void(const State& key, const std::vector<double>& q, long visits)>& f)
+    const {
+  for (const auto& [key, record] : table_) f(key, record.q, cappedVisits(record));
+}
+
 long UctPlanner::stateVisits(const State& s) const {
   const Record* r = find(s, "UctPlanner::stateVisits()");
   return r ? cappedVisits(*r) : 0;

@@ -65,8 +65,10 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   int nextAction(float reward, const rl_common::State& s) override;
   void lastAction(float reward) override;
   void seedExperiences(const std::vector<rl_common::Experience>& seeds) override;
-  /// Writes the values of the states a vi/pi/sweeping planner knows in the original's
-  /// policy-file format; UCT planners do not save a policy (nothing is written).
+  /// Writes Q-values in the original's policy-file format (PolicyFile), for `savedpolicy` to
+  /// act greedily on: with vi/pi/sweeping those of every state the planner knows; with a UCT
+  /// planner those of every state in its table (states binned with --nstates; with --history
+  /// the values under the state's most visited action history). Throws as PolicyFile::write.
   void savePolicy(const std::string& filename) override;
 
   RewardBreakdown lastRewardBreakdown() const override { return lastBreakdown_; }

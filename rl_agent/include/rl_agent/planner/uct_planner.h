@@ -40,6 +40,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <unordered_map>
 #include <utility>
@@ -113,6 +114,12 @@ class UctPlanner : public rl_common::Planner {
   long stateVisits(const rl_common::State& s) const;
   /// N(s, a), as stateVisits(); 0 if `s` has no record.
   long actionVisits(const rl_common::State& s, int action) const;
+
+  /// Calls f(key, Q, N) for every record, in no particular order: key is the record's
+  /// modelInput() (the possibly discretised state, then k·A action-history codes), Q its
+  /// action values and N its state visits as stateVisits() gives them.
+  void forEachRecord(const std::function<void(const rl_common::State& key,
+                                              const std::vector<double>& q, long visits)>& f) const;
 
   /// Number of state records.
   std::size_t numStates() const { return table_.size(); }
