@@ -3,6 +3,7 @@
 #include <ros/ros.h>
 
 #include <iostream>
+#include <memory>
 
 #include "nao_interface/ros/nao_arm_sim_node.h"
 #include "rl_common/ros/param_loader.h"
@@ -19,13 +20,16 @@ int main(int argc, char** argv) {
   parser.value("camera-rate", &options.cameraRate, "Hz of the camera images",
                rl_common::greaterThan(0.0));
   parser.value("driver-ns", &options.driverNs, "namespace of the driver's topics");
+  // Kept until main() returns: when the last node handle goes, the node shuts down, and a
+  // handle local to the block below silenced every later ROS_* line.
+  std::unique_ptr<ros::NodeHandle> pnh;
   try {
     if (!parser.parse(argc, argv)) {
       std::cout << parser.help();
       return 0;
     }
-    ros::NodeHandle pnh("~");
-    rl_common::loadPrivateParams(parser, pnh);
+    pnh = std::make_unique<ros::NodeHandle>("~");
+    rl_common::loadPrivateParams(parser, *pnh);
     parser.parse(argc, argv);  // the command line wins over parameters
   } catch (const std::exception& e) {
     std::cerr << "nao_arm_sim: " << e.what() << "\n";

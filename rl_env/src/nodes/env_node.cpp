@@ -3,6 +3,7 @@
 #include <ros/ros.h>
 
 #include <iostream>
+#include <memory>
 
 #include "rl_common/ros/param_loader.h"
 #include "rl_env/env/environment_registry.h"
@@ -15,6 +16,9 @@ int main(int argc, char** argv) {
   rl_common::OptionParser parser("env", "--env <type> [options]");
   rl_env::addEnvironmentOptions(parser, &options);
   parser.flag("prints", &prints, true, "log every action, the first two features and reward");
+  // Kept until main() returns: when the last node handle goes, the node shuts down, and a
+  // handle local to the block below silenced every later ROS_* line.
+  std::unique_ptr<ros::NodeHandle> pnh;
   try {
     // --help must work without a master: look at argv before touching the parameter server.
     if (!parser.parse(argc, argv)) {
@@ -22,8 +26,8 @@ int main(int argc, char** argv) {
                 << rl_common::joinNames(rl_env::environmentRegistry().names()) << "\n";
       return 0;
     }
-    ros::NodeHandle pnh("~");
-    rl_common::loadPrivateParams(parser, pnh);
+    pnh = std::make_unique<ros::NodeHandle>("~");
+    rl_common::loadPrivateParams(parser, *pnh);
     parser.parse(argc, argv);  // the command line wins over parameters
     rl_env::checkEnvironmentOptions(parser, options);
     rl_env::environmentRegistry().canonical(options.env);  // validate before building

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <ctime>
 #include <iostream>
+#include <memory>
 
 #include "rl_common/ros/param_loader.h"
 #include "rl_experiment/ros/experiment_node.h"
@@ -26,12 +27,16 @@ int main(int argc, char** argv) {
   parser.value("env", &config.env, "the env node's environment (recorded in the logs)");
   parser.value("timeout", &config.timeout, "seconds without a step before a trial fails",
                rl_common::greaterThan(0.0));
+  // Kept until main() returns: when the last node handle goes, the node shuts down, and a
+  // handle local to the block below silenced every later ROS_* line.
+  std::unique_ptr<ros::NodeHandle> pnh;
   try {
     if (!parser.parse(argc, argv)) {
       std::cout << parser.help();
       return 0;
     }
-    rl_common::loadPrivateParams(parser, ros::NodeHandle("~"));
+    pnh = std::make_unique<ros::NodeHandle>("~");
+    rl_common::loadPrivateParams(parser, *pnh);
     parser.parse(argc, argv);  // the command line wins over parameters
   } catch (const std::exception& e) {
     std::cerr << "experiment_node: " << e.what() << "\n(see experiment_node --help)\n";
