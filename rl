@@ -115,10 +115,13 @@ run_tsan_tests() {
   local results=$1 tsan=$BUILD_ROOT/tsan
   mkdir -p "$results" "$tsan/devel/lib/python3/dist-packages"
   log "building the threaded tests with ThreadSanitizer (${TSAN_TESTS[*]})"
-  if [ ! -f "$tsan/build/CMakeCache.txt" ]; then
+  # rl_agent and the packages it depends on (its agent node links rl_env).
+  local packages="rl_common;rl_msgs;naoqi_bridge_msgs;nao_interface;rl_env;rl_agent"
+  if ! grep -qx "CATKIN_WHITELIST_PACKAGES:STRING=$packages" "$tsan/build/CMakeCache.txt" \
+    2>/dev/null; then
     cmake -S "$ROOT" -B "$tsan/build" -DCATKIN_DEVEL_PREFIX="$tsan/devel" \
       -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DCATKIN_WHITELIST_PACKAGES="rl_common;rl_msgs;rl_agent" -DCATKIN_ENABLE_TESTING=ON \
+      -DCATKIN_WHITELIST_PACKAGES="$packages" -DCATKIN_ENABLE_TESTING=ON \
       -DCMAKE_CXX_FLAGS="-fsanitize=thread" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" \
       -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=thread" >"$tsan/configure.log" 2>&1 || return 1
   fi

@@ -70,3 +70,37 @@ TEST(OptimalAgent, BuiltThroughTheRegistryOnlyWithATrueModel) {
   o.agent = "qlearner";
   EXPECT_NE(rl_agent::makeAgent(o, d, &grid), nullptr);
 }
+
+TEST(OptimalAgent, TrueModelMismatchNamesEveryDifference) {
+  const rl_common::EnvironmentDescription model = test_mdps::TwoRoomGrid::describe();
+  EXPECT_EQ(rl_agent::trueModelMismatch(model, model), "");
+
+  rl_common::EnvironmentDescription other = model;
+  other.title = "Environment: something else\n";  // titles do not matter
+  EXPECT_EQ(rl_agent::trueModelMismatch(model, other), "");
+
+  other.numActions = model.numActions + 1;
+  other.maxFeatures[1] += 2.0f;
+  other.stochastic = !model.stochastic;
+  const std::string m = rl_agent::trueModelMismatch(model, other);
+  EXPECT_NE(m.find(std::to_string(other.numActions) + " actions, the model has " +
+                   std::to_string(model.numActions)),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find("feature 1 range"), std::string::npos) << m;
+  EXPECT_EQ(m.find("feature 0"), std::string::npos) << m;
+  EXPECT_NE(m.find("--stochastic / --deterministic"), std::string::npos) << m;
+
+  rl_common::EnvironmentDescription fewer = model;
+  fewer.minFeatures.pop_back();
+  fewer.maxFeatures.pop_back();
+  EXPECT_NE(rl_agent::trueModelMismatch(model, fewer).find("features, the model has"),
+            std::string::npos);
+
+  rl_common::EnvironmentDescription rewards = model;
+  rewards.maxReward += 1.0f;
+  rewards.episodic = !model.episodic;
+  const std::string r = rl_agent::trueModelMismatch(model, rewards);
+  EXPECT_NE(r.find("reward range"), std::string::npos) << r;
+  EXPECT_NE(r.find("episodic"), std::string::npos) << r;
+}

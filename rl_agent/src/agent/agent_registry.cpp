@@ -77,9 +77,10 @@ AgentRegistry buildRegistry() {
       [](const AgentOptions&,
          const rl_common::EnvironmentDescription&) -> std::unique_ptr<rl_common::Agent> {
         throw std::invalid_argument(
-            "makeAgent(): agent 'optimal' plans on the environment's true model: it is "
-            "available where the environment is in the same process (the experiment runner), "
-            "for environments with a true model (lightworld, taxi, tworooms, fourrooms)");
+            "makeAgent(): agent 'optimal' plans on the environment's true model: build it with "
+            "that model (the experiment runner passes its environment; the agent node builds "
+            "its own copy from --env), for environments with a true model (lightworld, taxi, "
+            "tworooms, fourrooms)");
       },
       "value iteration on the environment's true model (the paper's optimal policy)");
   return reg;

@@ -1,19 +1,85 @@
 // The agent node: `rosrun rl_agent agent --agent texplore --v 1 --n 3`. Options also come from
 // ~private parameters (the command line wins); see AgentNode for the protocol.
+//
+// `--agent optimal --env E [--deterministic ...]` builds a private copy of environment E from
+// rl_env's registry as the true model the agent plans on (value iteration); E and its options
+// must be those of the env node, which the node checks against the received description.
 #include <ros/ros.h>
 
 #include <iostream>
+#include <memory>
 
 #include "rl_agent/agent/agent_registry.h"
 #include "rl_agent/ros/agent_node.h"
 #include "rl_common/ros/param_loader.h"
+#include "rl_common/true_model.h"
+#include "rl_env/env/environment_registry.h"
+
+namespace {
+
+const char* const kTrueModelEnvs = "lightworld, taxi, tworooms, fourrooms";
+const char* const kTrueModelChoice = "lightworld|taxi|tworooms|fourrooms";
+
+/// The true-model environment of `optimal`, or null for every other agent. Throws
+/// rl_common::OptionError if --env (or an environment option) is missing, misplaced or invalid.
+std::unique_ptr<rl_common::Environment> trueModelEnvironment(
+    const rl_common::OptionParser& parser, const rl_agent::AgentOptions& options,
+    rl_env::EnvironmentOptions envOptions) {
+  const bool optimal = options.agent == "optimal";
+  if (!optimal) {
+    rl_common::OptionParser envOnly("agent", "");
+    rl_env::EnvironmentOptions unused;
+    envOnly.value("env", &unused.env, "");
+    rl_env::addEnvironmentVariantOptions(envOnly, &unused);
+    for (const auto& spec : envOnly.specs()) {
+      if (parser.given(spec.name)) {
+        throw rl_common::OptionError(
+            "option --" + spec.name + " applies only to --agent optimal, which plans on its own " +
+            "copy of the env node's environment: agent --agent optimal --env {" +
+            std::string(kTrueModelChoice) + "} [--seed S] [the env node's options, e.g. " +
+            "--deterministic]; every other agent learns from the env node's messages alone");
+      }
+    }
+    return nullptr;
+  }
+  if (!parser.given("env")) {
+    throw rl_common::OptionError(
+        "--agent optimal needs --env <name>: the env node's environment (one of " +
+        std::string(kTrueModelEnvs) + "), with the env node's options (e.g. --deterministic)");
+  }
+  rl_env::checkEnvironmentOptions(parser, envOptions);
+  try {
+    envOptions.env = rl_env::environmentRegistry().canonical(envOptions.env);
+  } catch (const std::invalid_argument& e) {
+    throw rl_common::OptionError(std::string("option --env: ") + e.what());
+  }
+  envOptions.seed = options.seed;  // never stepped: only its dynamics are used
+  auto env = rl_env::makeEnvironment(envOptions);
+  if (dynamic_cast<const rl_common::TrueModel*>(env.get()) == nullptr) {
+    throw rl_common::OptionError(
+        "option --env: '" + envOptions.env +
+        "' offers no true model for --agent optimal (valid: " + kTrueModelEnvs + ")");
+  }
+  return env;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "RLAgent");
   rl_agent::AgentOptions options;
+  rl_env::EnvironmentOptions envOptions;
+  envOptions.env.clear();  // none unless --agent optimal
   rl_common::OptionParser parser("agent", "--agent <type> [options]");
   rl_agent::addAgentOptions(parser, &options);
   parser.value("seed", &options.seed, "seed of the agent's random source");
+  parser.value("env", &envOptions.env,
+               "--agent optimal only: the env node's environment, built privately as the true "
+               "model to plan on (lightworld, taxi, tworooms, fourrooms); give the env node's "
+               "options too");
+  rl_env::addEnvironmentVariantOptions(parser, &envOptions);
+  std::unique_ptr<rl_common::Environment> trueModelEnv;
+  std::unique_ptr<ros::NodeHandle> pnh;
   try {
     // --help must work without a master: look at argv before the parameter server.
     if (!parser.parse(argc, argv)) {
@@ -22,11 +88,15 @@ int main(int argc, char** argv) {
                 << "\n";
       return 0;
     }
-    rl_common::loadPrivateParams(parser, ros::NodeHandle("~"));
+    // Keep this first node handle until the end: the last handle's destruction shuts the node
+    // down, and logging with it (a temporary here silenced every later ROS_* line).
+    pnh = std::make_unique<ros::NodeHandle>("~");
+    rl_common::loadPrivateParams(parser, *pnh);
     parser.parse(argc, argv);  // the command line wins over parameters
-    rl_agent::agentRegistry().canonical(options.agent);
+    options.agent = rl_agent::agentRegistry().canonical(options.agent);
     rl_agent::applyAgentDefaults(parser, &options);
     rl_agent::checkAgentOptions(parser, options);
+    trueModelEnv = trueModelEnvironment(parser, options, envOptions);
   } catch (const std::exception& e) {
     std::cerr << "agent: " << e.what() << "\n";
     return 2;
@@ -34,7 +104,7 @@ int main(int argc, char** argv) {
   std::string config;
   for (const auto& [name, value] : parser.currentValues()) config += " " + name + "=" + value;
   ROS_INFO_STREAM_NAMED("agent", "configuration:" << config);
-  rl_agent::AgentNode node(ros::NodeHandle(), options);
+  rl_agent::AgentNode node(ros::NodeHandle(), options, std::move(trueModelEnv));
   ros::spin();
-  return 0;
+  return node.failed() ? 1 : 0;
 }

@@ -8,11 +8,15 @@
 #include <stdexcept>
 
 #include "rl_agent/agent/agent_registry.h"
+#include "rl_agent/agent/optimal_agent.h"
 #include "rl_agent/agent/reward_breakdown_source.h"
 
 namespace rl_agent {
 
 namespace {
+
+/// Seed experiences kept while no description has arrived.
+constexpr std::size_t kMaxEarlySeeds = 100000;
 
 bool allFinite(const std::vector<float>& v) {
   for (float x : v) {
@@ -52,7 +56,17 @@ rl_common::EnvironmentDescription fromMessage(const rl_msgs::RLEnvDescription& m
   return d;
 }
 
-AgentNode::AgentNode(ros::NodeHandle nh, const AgentOptions& options) : nh_(nh), options_(options) {
+AgentNode::AgentNode(ros::NodeHandle nh, const AgentOptions& options,
+                     std::unique_ptr<rl_common::Environment> trueModelEnv)
+    : nh_(nh), options_(options), trueModelEnv_(std::move(trueModelEnv)) {
+  if (trueModelEnv_) {
+    trueModel_ = dynamic_cast<const rl_common::TrueModel*>(trueModelEnv_.get());
+    if (trueModel_ == nullptr) {
+      throw std::invalid_argument("AgentNode::AgentNode(): environment '" + trueModelEnv_->name() +
+                                  "' has no true model (valid: lightworld, taxi, tworooms, "
+                                  "fourrooms)");
+    }
+  }
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
   actionPub_ = nh_.advertise<rl_msgs::RLAction>("rl_agent/rl_action", 1);
   infoPub_ = nh_.advertise<rl_msgs::RLExperimentInfo>("rl_agent/rl_experiment_info", 1);
@@ -76,7 +90,7 @@ AgentNode::~AgentNode() {
 }
 
 void AgentNode::buildAgent() {
-  agent_ = makeAgent(options_, *description_);
+  agent_ = makeAgent(options_, *description_, trueModel_);
   firstAction_ = true;
   episode_ = 0;
   steps_ = 0;
@@ -88,6 +102,22 @@ void AgentNode::onDescription(const rl_msgs::RLEnvDescription::ConstPtr& msg) {
   } catch (const std::invalid_argument& e) {
     ROS_ERROR_STREAM_NAMED("agent", "dropping a malformed environment description: " << e.what());
     return;
+  }
+  if (trueModelEnv_) {
+    const std::string mismatch = trueModelMismatch(trueModelEnv_->describe(), *description_);
+    if (!mismatch.empty()) {
+      ROS_FATAL_STREAM_NAMED(
+          "agent", "the env node's task ("
+                       << msg->title.substr(0, msg->title.find('\n'))
+                       << ") is not the environment agent '" << options_.agent << "' plans on ("
+                       << trueModelEnv_->name()
+                       << "; give the env node's --env and options): " << mismatch);
+      agent_.reset();
+      description_.reset();
+      failed_ = true;
+      ros::shutdown();
+      return;
+    }
   }
   try {
     buildAgent();
@@ -101,6 +131,13 @@ void AgentNode::onDescription(const rl_msgs::RLEnvDescription::ConstPtr& msg) {
                                      << msg->title.substr(0, msg->title.find('\n')) << " with "
                                      << description_->numFeatures() << " features, "
                                      << description_->numActions << " actions");
+  // What came before the description, in order: the seeds, then the latest state.
+  const auto seeds = std::move(earlySeeds_);
+  earlySeeds_.clear();
+  const auto state = std::move(earlyState_);
+  earlyState_.reset();
+  for (const auto& seed : seeds) onSeed(seed);
+  if (state) onState(state);
 }
 
 bool AgentNode::validState(const std::vector<float>& s, const char* what) const {
@@ -118,8 +155,16 @@ bool AgentNode::validState(const std::vector<float>& s, const char* what) const 
 }
 
 void AgentNode::onSeed(const rl_msgs::RLEnvSeedExperience::ConstPtr& msg) {
+  if (!description_ && !failed_) {
+    if (earlySeeds_.size() < kMaxEarlySeeds) {
+      earlySeeds_.push_back(msg);  // replayed once the description has built the agent
+    } else {
+      ROS_WARN_THROTTLE_NAMED(10, "agent", "dropping seed experiences: no description yet");
+    }
+    return;
+  }
   if (!agent_) {
-    ROS_WARN_NAMED("agent", "dropping a seed experience: no agent yet (no description)");
+    ROS_WARN_NAMED("agent", "dropping a seed experience: no agent (see the errors above)");
     return;
   }
   if (!validState(msg->from_state, "seed experience") ||
@@ -133,8 +178,12 @@ void AgentNode::onSeed(const rl_msgs::RLEnvSeedExperience::ConstPtr& msg) {
 }
 
 void AgentNode::onState(const rl_msgs::RLStateReward::ConstPtr& msg) {
+  if (!description_ && !failed_) {
+    earlyState_ = msg;  // acted on once the description has built the agent
+    return;
+  }
   if (!agent_) {
-    ROS_WARN_NAMED("agent", "dropping a state: no agent yet (no environment description)");
+    ROS_WARN_NAMED("agent", "dropping a state: no agent (see the errors above)");
     return;
   }
   if (!validState(msg->state, "state") || !std::isfinite(msg->reward)) return;

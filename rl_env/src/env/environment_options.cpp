@@ -11,6 +11,10 @@ namespace rl_env {
 void addEnvironmentOptions(rl_common::OptionParser& parser, EnvironmentOptions* o) {
   parser.value("env", &o->env, "environment (see the list of valid names with an unknown one)");
   parser.value("seed", &o->seed, "seed of the environment's random source");
+  addEnvironmentVariantOptions(parser, o);
+}
+
+void addEnvironmentVariantOptions(rl_common::OptionParser& parser, EnvironmentOptions* o) {
   parser.flag("stochastic", &o->stochastic, true, "noisy dynamics (the default)");
   parser.flag("deterministic", &o->stochastic, false, "noise-free dynamics");
   parser.value("delay", &o->delay, "delay in steps (mcar, tworooms)", rl_common::atLeast(0));

@@ -344,7 +344,9 @@ std::vector<std::pair<std::string, std::string>> Experiment::runTrial(
   resetPeakRss();
   const auto start = std::chrono::steady_clock::now();
   auto env = rl_env::makeEnvironment(eo);
-  auto agent = rl_agent::makeAgent(ao, env->describe());
+  // `optimal` plans on the environment's exact dynamics (the other agents ignore them).
+  auto agent = rl_agent::makeAgent(ao, env->describe(),
+                                   dynamic_cast<const rl_common::TrueModel*>(env.get()));
 
   TrialLimits limits;
   limits.steps = config_.steps > 0 ? config_.steps : config_.nepisodes;

@@ -13,10 +13,12 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 
 #include "rl_agent/model/true_model_view.h"
 #include "rl_agent/planner/value_iteration.h"
 #include "rl_common/agent.h"
+#include "rl_common/environment.h"
 
 namespace rl_agent {
 
@@ -47,5 +49,13 @@ class OptimalAgent : public rl_common::Agent {
   std::shared_ptr<const TrueModelView> view_;
   ValueIteration planner_;
 };
+
+/// Where a task description received from elsewhere (e.g. the env node's RLEnvDescription)
+/// disagrees with the description of the environment whose true model the agent plans on:
+/// number of actions, number of features, each feature's range, the reward range, episodic
+/// and stochastic. Empty if they agree; otherwise one clause per difference, e.g.
+/// "3 actions, the model has 4; feature 2 range [0, 1], the model's [0, 2]".
+std::string trueModelMismatch(const rl_common::EnvironmentDescription& model,
+                              const rl_common::EnvironmentDescription& received);
 
 }  // namespace rl_agent

@@ -8,11 +8,17 @@
  *              rl_agent/rl_reward_breakdown (new: RLRewardBreakdown, every step)
  *   service    rl_agent/reset (rl_msgs/Reset, new): rebuild the agent (optionally reseeded)
  *
+ * With a true model (`--agent optimal --env E`) the node holds its own copy of environment E,
+ * used only as the model the agent plans on; a description that does not match that copy's
+ * (actions, features, ranges, rewards, episodic, stochastic) is fatal: ROS_FATAL, the node
+ * shuts down and failed() is true (main exits non-zero).
+ *
  * A description (re)builds the agent; each seed message is learned at once; a state message
  * starts an episode (first action), continues it (next action) or ends it (terminal: last
- * action, an RLExperimentInfo, no action published), as the original. Malformed messages
- * (wrong lengths, NaN or infinite values, a state before any description) are logged and
- * dropped; the node keeps running.
+ * action, an RLExperimentInfo, no action published), as the original. Seeds and a state that
+ * arrive before the first description (the latched state of an env node that is already
+ * running can) are kept and replayed once the agent is built. Malformed messages
+ * (wrong lengths, NaN or infinite values) are logged and dropped; the node keeps running.
  */
 #pragma once
 
@@ -25,10 +31,12 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "rl_agent/agent/agent_options.h"
 #include "rl_common/agent.h"
 #include "rl_common/environment.h"
+#include "rl_common/true_model.h"
 
 namespace rl_agent {
 
@@ -38,8 +46,16 @@ rl_common::EnvironmentDescription fromMessage(const rl_msgs::RLEnvDescription& m
 
 class AgentNode {
  public:
-  AgentNode(ros::NodeHandle nh, const AgentOptions& options);
+  /// `trueModelEnv`: for `optimal`, the node's own copy of the env node's environment (it
+  /// must implement rl_common::TrueModel); null for every other agent. Throws
+  /// std::invalid_argument if it is given but has no true model.
+  AgentNode(ros::NodeHandle nh, const AgentOptions& options,
+            std::unique_ptr<rl_common::Environment> trueModelEnv = nullptr);
   ~AgentNode();
+
+  /// True after a fatal error (a description that does not match the true model); the node
+  /// has then called ros::shutdown().
+  bool failed() const { return failed_; }
 
   void onDescription(const rl_msgs::RLEnvDescription::ConstPtr& msg);
   void onSeed(const rl_msgs::RLEnvSeedExperience::ConstPtr& msg);
@@ -52,6 +68,9 @@ class AgentNode {
 
   ros::NodeHandle nh_;
   AgentOptions options_;
+  std::unique_ptr<rl_common::Environment> trueModelEnv_;
+  const rl_common::TrueModel* trueModel_ = nullptr;  ///< trueModelEnv_ as a TrueModel
+  bool failed_ = false;
   std::optional<rl_common::EnvironmentDescription> description_;
   std::unique_ptr<rl_common::Agent> agent_;
   bool firstAction_ = true;
@@ -59,6 +78,8 @@ class AgentNode {
   int actions_ = 0;
   long steps_ = 0;
   float episodeReward_ = 0.0f;
+  std::vector<rl_msgs::RLEnvSeedExperience::ConstPtr> earlySeeds_;  ///< before any description
+  rl_msgs::RLStateReward::ConstPtr earlyState_;                     ///< the latest such state
   ros::Subscriber descriptionSub_, stateSub_, seedSub_;
   ros::Publisher actionPub_, infoPub_, breakdownPub_;
   ros::ServiceServer resetSrv_;

@@ -27,6 +27,11 @@ struct EnvironmentOptions {
 /// --lag, --nolag, --highvar and --task on `parser`, writing into `options`.
 void addEnvironmentOptions(rl_common::OptionParser& parser, EnvironmentOptions* options);
 
+/// Declares the options that choose an environment's variant, every option of
+/// addEnvironmentOptions but --env and --seed (the agent node uses them to build its own copy
+/// of the env node's environment as the `optimal` agent's true model).
+void addEnvironmentVariantOptions(rl_common::OptionParser& parser, EnvironmentOptions* options);
+
 /// Rejects options given for an environment that does not use them (as the original did),
 /// e.g. --delay with taxi. Throws rl_common::OptionError naming the option and the
 /// environments it applies to.
