@@ -149,3 +149,12 @@ TEST(AgentOptions, ModelExplorerAndPlannerCombinations) {
   EXPECT_NE(errorOf({"--agent", "sarsa", "--k", "10"}), "");
   EXPECT_FLOAT_EQ(parse({"--agent", "sarsa", "--lambda", "0.9"}).lambda, 0.9f);
 }
+
+TEST(AgentOptions, PathVisitsIsAUctPlannerOptionOffByDefault) {
+  EXPECT_FALSE(parse({"--agent", "texplore"}).pathvisits);
+  EXPECT_TRUE(parse({"--agent", "texplore", "--v", "1", "--n", "3", "--pathvisits"}).pathvisits);
+  EXPECT_NE(errorOf({"--agent", "qlearner", "--pathvisits"}), "");
+  EXPECT_NE(errorOf({"--agent", "modelbased", "--planner", "vi", "--pathvisits"})
+                .find("needs a UCT planner"),
+            std::string::npos);
+}

@@ -521,3 +521,30 @@ TEST(UctPlanner, LeastRecentlyVisitedStatesAreEvictedFirst) {
   EXPECT_LE(planner.numStates(), 3u);
   EXPECT_EQ(planner.stateVisits(State{0.0f}), 201);
 }
+
+TEST(UctPlanner, ARepeatedStateOnARolloutTriesAnotherAction) {
+  // A corridor where action 0 stays put (a self-loop, like PICKUP off the key) and action 1
+  // steps right; nothing pays. The first choice at each state is a coin flip (equal counts).
+  // Counting the path's choices, a state met again takes the other action, so one rollout of
+  // 200 steps walks about 130 states down the corridor. Counting only on return (the
+  // original), the state repeats its choice: the first self-loop holds the rollout to the
+  // depth cap, and rollouts end within a few states of the start.
+  auto corridor = [](const State& s, int a) {
+    return outcome({{State{a == 1 ? s[0] + 1.0f : s[0]}, 1.0}}, 0.0f);
+  };
+  for (bool countPath : {true, false}) {
+    UctPlanner::Config c = config(2, 0.99, 1000.0f);
+    c.countPathVisits = countPath;
+    UctPlanner planner(c, 5);
+    const auto model = view(corridor);
+    planner.setModel(model);
+    planner.plan(State{0.0f}, PlanningBudget::ofRollouts(10));
+    float furthest = 0.0f;
+    for (const auto& [input, action] : model->inputs()) furthest = std::max(furthest, input[0]);
+    if (countPath) {
+      EXPECT_GE(furthest, 60.0f);
+    } else {
+      EXPECT_LT(furthest, 30.0f);  // P(a rollout gets 30 states along) = 2^-30
+    }
+  }
+}

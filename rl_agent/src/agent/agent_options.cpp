@@ -64,6 +64,10 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
   p.value("nstates", &o->nstates, "bins per feature (0: none)", atLeast(0));
   p.value("k", &o->k, "Dyna model updates per step", atLeast(0));
   p.value("filename", &o->filename, "policy file");
+  p.flag("pathvisits", &o->pathvisits, true,
+         "UCT: at a state met again on a rollout, try the actions not yet chosen there on that "
+         "rollout (the original repeats its choice, so a self-loop holds the rollout to the "
+         "depth cap)");
   p.value("rollouts", &o->rollouts,
           "UCT rollouts per step, planned synchronously for reproducible runs (0: plan in real "
           "time at --actrate)",
@@ -129,13 +133,13 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
   lambdaAgents.push_back("sarsa");
   requireAgent(p, o, "lambda", lambdaAgents);
   for (const char* option : {"actrate", "m", "model", "planner", "combo", "nmodels", "reltrans",
-                             "abstrans", "v", "n", "history", "rollouts", "tau"}) {
+                             "abstrans", "v", "n", "history", "rollouts", "tau", "pathvisits"}) {
     requireAgent(p, o, option, kModelBased);
   }
   const bool modelBased = isOneOf(o.agent, kModelBased);
   if (modelBased) {
     const bool searchPlanner = o.planner != "vi" && o.planner != "pi" && o.planner != "sweeping";
-    for (const char* option : {"actrate", "lambda", "history", "rollouts"}) {
+    for (const char* option : {"actrate", "lambda", "history", "rollouts", "pathvisits"}) {
       if (p.given(option) && !searchPlanner) {
         throw rl_common::OptionError(std::string("option --") + option +
                                      " needs a UCT planner (uct, parallel-uct, delayed-uct, "

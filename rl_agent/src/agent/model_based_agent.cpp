@@ -62,6 +62,7 @@ UctPlanner::Config plannerConfig(const AgentOptions& o,
   if (o.nstates > 0) c.statesPerDim = {o.nstates};
   c.history = o.history;
   c.trackActual = true;
+  c.countPathVisits = o.pathvisits;
   return c;
 }
 

@@ -220,6 +220,7 @@ void UctPlanner::rollout(const State& root) {
         break;
       }
       const int a = selectUcbAction(rec);
+      if (config_.countPathVisits) ++rec.pathChosen[a];
       const double alpha = 10.0 / (static_cast<double>(rec.actionVisits[a]) + 10.0);
       const StateActionInfo& info = prediction(rec, key_, a);
       const double p = info.termProb;
@@ -237,9 +238,7 @@ void UctPlanner::rollout(const State& root) {
       actual_.swap(next_);
     }
   } catch (...) {
-    for (const Step& st : path_) {
-      st.record->onPath = 0;
-    }
+    clearPath();
     throw;
   }
 
@@ -263,8 +262,13 @@ void UctPlanner::rollout(const State& root) {
     }
     g = lambda < 1.0 ? lambda * target + (1.0 - lambda) * maxQ(rec) : target;
   }
+  clearPath();
+}
+
+void UctPlanner::clearPath() {
   for (const Step& st : path_) {
     st.record->onPath = 0;
+    st.record->pathChosen[st.action] = 0;
   }
 }
 
@@ -402,6 +406,7 @@ UctPlanner::Record& UctPlanner::touch(const State& key) {
       q = rng_.uniform(0.0, 0.01);
     }
     r.actionVisits.assign(static_cast<std::size_t>(config_.numActions), 1);
+    r.pathChosen.assign(static_cast<std::size_t>(config_.numActions), 0);
     r.version = modelVersion_;
     it = table_.emplace(key, std::move(r)).first;
     it->second.key = &it->first;  // nodes are stable: the key's address stays valid
@@ -431,13 +436,18 @@ const UctPlanner::Record* UctPlanner::find(const State& s, const char* where) co
 }
 
 int UctPlanner::selectUcbAction(const Record& r) {
-  const double logN = std::log(static_cast<double>(r.visits));
+  // Choices made at this state earlier on the rollout's path count as visits (0 on the first).
+  long onPath = 0;
+  if (r.onPath > 0) {
+    for (int k : r.pathChosen) onPath += k;
+  }
+  const double logN = std::log(static_cast<double>(r.visits + onPath));
   values_.resize(static_cast<std::size_t>(config_.numActions));
   double best = -std::numeric_limits<double>::infinity();
   int ties = 0;
   for (int a = 0; a < config_.numActions; ++a) {
-    const double v =
-        r.q[a] + ucbConstant_ * std::sqrt(logN / static_cast<double>(r.actionVisits[a]));
+    const long n = r.actionVisits[a] + (onPath > 0 ? r.pathChosen[a] : 0);
+    const double v = r.q[a] + ucbConstant_ * std::sqrt(logN / static_cast<double>(n));
     values_[a] = v;
     if (v > best) {
       best = v;

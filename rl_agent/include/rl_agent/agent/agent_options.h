@@ -35,6 +35,9 @@ struct AgentOptions {
   std::string filename;  ///< policy file (savedpolicy reads it; others write it at shutdown)
   long rollouts = 0;     ///< UCT rollouts per step, synchronously (0: real time at actrate)
   float tau = 0.2f;      ///< Boltzmann temperature (--explore boltzmann; 0.2 in the paper)
+  /// UCT: count the path's choices at a state met again on a rollout (UctPlanner::Config::
+  /// countPathVisits); off by default, as the original.
+  bool pathvisits = false;
 };
 
 /// Declares every agent option but --seed on `parser`, writing into `options`. Programs declare

@@ -25,6 +25,15 @@
  * s > 0), ds = factor·bin. With trackActual and discretisation, the rollout carries the
  * continuous state: s'_actual = s_actual + (s' − disc(s)).
  *
+ * Selection at a state met again on the same rollout (countPathVisits, off by default) counts
+ * the actions already chosen there on this rollout: N(s) + k and N(s,a) + k_a, for k_a
+ * choices of a on the path so far (k their sum). The original counted only when the rollout
+ * returned, so a repeated state chose the same action again; a self-loop (PICKUP off the
+ * key, a step into a wall) then repeated to the depth cap. With the UCB constant making
+ * selection nearly uniform, about a third of LightWorld's actions are self-loops, so most
+ * rollouts stopped moving within two or three steps, the planner could not see novelty further
+ * away, and TEXPLORE-VANIR stayed put; the first visit of a state is selected as before.
+ *
  * setModel() starts a new model version: each record's counts are capped lazily, when the
  * record is next touched, at N(s,a) ≤ 10 and N(s) ≤ 10·A, and each cached model prediction is
  * re-queried lazily when next used. Unlike the original, memory is bounded, at O(1) cost per
@@ -73,6 +82,14 @@ class UctPlanner : public rl_common::Planner {
     float rangeEpsilon = 1e-5f;     ///< tolerance of the feature range check
     std::size_t maxStates = 25000;  ///< state records kept (least recent evicted)
     std::size_t maxCachedPredictions = 15000;  ///< cached model predictions (state-actions)
+    /// At a state met again on the same rollout, count the actions already chosen there on
+    /// this rollout in the UCB term. The original's counts change only when the rollout
+    /// returns, so at a repeated state it chose the same action again: one self-loop (PICKUP
+    /// off the key, a step into a wall) then repeated to the depth cap, and rollouts rarely
+    /// got further than the first self-loop (see the comment at the top). false: as the
+    /// original (the default, for faithfulness). The first visit of a state on a rollout is
+    /// the same either way. The agents' --pathvisits.
+    bool countPathVisits = false;
   };
 
   /// Throws std::invalid_argument, naming the option, if the configuration is invalid.
@@ -156,6 +173,7 @@ class UctPlanner : public rl_common::Planner {
     std::uint64_t version = 0;              // model version whose count cap has been applied
     std::uint64_t lastTouched = 0;          // rollout stamp: records of the current rollout stay
     int onPath = 0;                         // occurrences on the current rollout's path
+    std::vector<int> pathChosen;            // per action: chosen on the current path
     int cached = 0;                         // predictions cached (version != 0)
     std::vector<Prediction> predictions;    // empty, or A entries
     const rl_common::State* key = nullptr;  // the table's key of this record
@@ -174,6 +192,8 @@ class UctPlanner : public rl_common::Planner {
   };
 
   void rollout(const rl_common::State& root);
+  /// Resets the path marks (onPath, pathChosen) of the records on the current rollout.
+  void clearPath();
   void sampleSuccessor(const rl_common::StateActionInfo& info);
   bool inRange(const rl_common::State& s) const;
   void appendDiscretized(const rl_common::State& s, rl_common::State& out) const;
