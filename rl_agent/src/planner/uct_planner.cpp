@@ -268,7 +268,7 @@ void UctPlanner::rollout(const State& root) {
 void UctPlanner::clearPath() {
   for (const Step& st : path_) {
     st.record->onPath = 0;
-    st.record->pathChosen[st.action] = 0;
+    if (config_.countPathVisits) st.record->pathChosen[st.action] = 0;
   }
 }
 
@@ -406,7 +406,9 @@ UctPlanner::Record& UctPlanner::touch(const State& key) {
       q = rng_.uniform(0.0, 0.01);
     }
     r.actionVisits.assign(static_cast<std::size_t>(config_.numActions), 1);
-    r.pathChosen.assign(static_cast<std::size_t>(config_.numActions), 0);
+    if (config_.countPathVisits) {
+      r.pathChosen.assign(static_cast<std::size_t>(config_.numActions), 0);
+    }
     r.version = modelVersion_;
     it = table_.emplace(key, std::move(r)).first;
     it->second.key = &it->first;  // nodes are stable: the key's address stays valid
@@ -438,7 +440,7 @@ const UctPlanner::Record* UctPlanner::find(const State& s, const char* where) co
 int UctPlanner::selectUcbAction(const Record& r) {
   // Choices made at this state earlier on the rollout's path count as visits (0 on the first).
   long onPath = 0;
-  if (r.onPath > 0) {
+  if (r.onPath > 0 && config_.countPathVisits) {
     for (int k : r.pathChosen) onPath += k;
   }
   const double logN = std::log(static_cast<double>(r.visits + onPath));

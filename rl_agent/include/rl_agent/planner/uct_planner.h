@@ -173,7 +173,7 @@ class UctPlanner : public rl_common::Planner {
     std::uint64_t version = 0;              // model version whose count cap has been applied
     std::uint64_t lastTouched = 0;          // rollout stamp: records of the current rollout stay
     int onPath = 0;                         // occurrences on the current rollout's path
-    std::vector<int> pathChosen;            // per action: chosen on the current path
+    std::vector<int> pathChosen;            // per action: chosen on the path (countPathVisits)
     int cached = 0;                         // predictions cached (version != 0)
     std::vector<Prediction> predictions;    // empty, or A entries
     const rl_common::State* key = nullptr;  // the table's key of this record
