@@ -10,8 +10,9 @@ Experiments (each agent runs --trials trials through the standalone `experiment`
                 where PRESS was tried)
   combined      3000 steps with intrinsic and external rewards together (Fig. 7)
   ablation      TEXPLORE-VANIR with v/n in {1/3, 1/0, 0/3, 0/0}, 5000 steps combined (Fig. 8)
-Agents: TEXPLORE-VANIR (v=1, n=3), TEXPLORE greedy (v=0, n=0) and every other agent the registry
-offers when this runs (`experiment --list-agents`), so comparison agents join as they land.
+Agents: TEXPLORE-VANIR (v=1, n=3), TEXPLORE greedy (v=0, n=0), the paper's comparison explorers
+on TEXPLORE's forest (random, competence, prederror, R-MAX-style, Boltzmann), the tabular random
+agent, and every other agent the registry offers when this runs (`experiment --list-agents`).
 --quick uses 4 trials and shorter runs (under 15 minutes on 2 cores). The full run (30
 trials) takes about 3 hours on 2 cores with today's agents, about 5 with every comparison agent. Writes run folders,
 figures (PNG, PDF) per experiment and DIR/results.md with the final numbers and 95% intervals.
@@ -27,9 +28,18 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 PAPER_OPTIMAL_TASK_REWARD = 1800.6  # the paper's optimal policy over the 3000 task steps
 SKIPPED_AGENTS = {
-    "modelbased": "the generic model-based agent; texplore covers it",
     "savedpolicy": "needs a policy file",
 }
+# (label, options) of the paper's comparison methods on TEXPLORE's forest model: random
+# actions, R-IAC-style competence progress, prediction error, R-MAX-style rewards (Figs. 4-6)
+# and Boltzmann selection with the paper's temperature (Fig. 7).
+COMPARISON_EXPLORERS = [
+    ("texplore-random", ["--explore", "random"]),
+    ("texplore-competence", ["--explore", "competence"]),
+    ("texplore-prederror", ["--explore", "prederror"]),
+    ("texplore-rmax-style", ["--explore", "unknown", "--m", "5"]),
+    ("texplore-boltzmann", ["--explore", "boltzmann", "--tau", "0.2"]),
+]
 
 
 def find_experiment():
@@ -72,6 +82,13 @@ def agent_variants(exe, rollouts, log):
         if name == "texplore":
             variants.append(("texplore-vanir", ["--agent", "texplore", "--v", "1", "--n", "3"]))
             variants.append(("texplore-greedy", ["--agent", "texplore"]))
+            # The paper's comparison explorers on the same forest model (section 5.1).
+            for label, explore in COMPARISON_EXPLORERS:
+                variants.append((label, ["--agent", "texplore"] + explore))
+        elif name == "modelbased":
+            # The paper's random agent with a tabular model.
+            variants.append(("tabular-random", ["--agent", "modelbased", "--model", "tabular",
+                                                "--explore", "random", "--planner", "vi"]))
         else:
             variants.append((name, ["--agent", name]))
     out = []
@@ -115,15 +132,16 @@ def main(argv=None):
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="parallel trials")
     ap.add_argument("--seed", type=int, default=1, help="run seed (trial seeds derive from it)")
     ap.add_argument("--rollouts", type=int, default=None,
-                    help="UCT rollouts per step for planning agents (100; quick 50)")
+                    help="UCT rollouts per step for planning agents (100)")
     ap.add_argument("--experiment", action="append",
                     choices=["explore-task", "combined", "ablation"],
                     help="run only these experiments (default: all)")
     args = ap.parse_args(argv)
 
     if args.quick:
-        trials, explore, task, combined, ablation = 4, 400, 800, 1000, 1200
-        samples, rollouts = 1000, 50
+        # The paper's 1000 exploration steps, shorter task and combined runs, fewer trials.
+        trials, explore, task, combined, ablation = 4, 1000, 1000, 1500, 2000
+        samples, rollouts = 1000, 100
     else:
         trials, explore, task, combined, ablation = 30, 1000, 3000, 3000, 5000
         samples, rollouts = 5000, 100
