@@ -2,7 +2,7 @@
 """The TEXPLORE-VANIR paper's LightWorld experiments (section 5.1, Figs. 4-8), in one command.
 
 Usage: reproduce.py lightworld [--quick] [--out DIR] [--trials N] [--jobs K] [--seed S]
-                               [--rollouts R] [--experiment NAME ...]
+                               [--rollouts R] [--experiment NAME ...] [--list]
 
 Experiments (each agent runs --trials trials through the standalone `experiment` runner):
   explore-task  1000 exploration steps without external reward, then 3000 task steps acting
@@ -136,6 +136,8 @@ def main(argv=None):
     ap.add_argument("--experiment", action="append",
                     choices=["explore-task", "combined", "ablation"],
                     help="run only these experiments (default: all)")
+    ap.add_argument("--list", action="store_true",
+                    help="print each experiment's agents and their options, then exit")
     args = ap.parse_args(argv)
 
     if args.quick:
@@ -148,8 +150,14 @@ def main(argv=None):
     trials = args.trials or trials
     rollouts = args.rollouts or rollouts
     out = args.out or os.path.join("results", "lightworld" + ("-quick" if args.quick else ""))
-    os.makedirs(out, exist_ok=True)
     exe = find_experiment()
+    if args.list:
+        for label, opts in agent_variants(exe, rollouts, lambda text: print(text)):
+            print("explore-task, combined: %-20s %s" % (label, " ".join(opts)))
+        for label, opts in ablation_variants(rollouts):
+            print("ablation: %-20s %s" % (label, " ".join(opts)))
+        return 0
+    os.makedirs(out, exist_ok=True)
     start = time.time()
     logf = open(os.path.join(out, "reproduce.log"), "a")
 

@@ -195,3 +195,21 @@ TEST(Experiment, FigureScriptDrawsFromAFabricatedRunFolder) {
   EXPECT_NE(table.find("| fake |"), std::string::npos) << table;
   EXPECT_NE(table.find("10.0"), std::string::npos) << table;
 }
+
+// The reproduction compares TEXPLORE-VANIR with the paper's comparison methods (section 5.1),
+// each accepted by the runner it will call.
+TEST(ReproduceScript, ListsThePapersComparisonAgents) {
+  const auto [status, text] =
+      shell("RL_EXPERIMENT=" + std::string(EXPERIMENT_BIN) + " /usr/bin/python3 " +
+            std::string(REPRODUCE_SCRIPT) + " lightworld --list");
+  ASSERT_EQ(status, 0) << text;
+  for (const char* agent :
+       {"texplore-vanir ", "texplore-greedy ", "texplore-random ", "texplore-competence ",
+        "texplore-prederror ", "texplore-rmax-style ", "texplore-boltzmann ", "tabular-random ",
+        "rmax ", "optimal ", "texplore-v0-n3 "}) {
+    EXPECT_NE(text.find(agent), std::string::npos) << agent << "\n" << text;
+  }
+  EXPECT_NE(text.find("--explore competence"), std::string::npos) << text;
+  EXPECT_NE(text.find("--model tabular --explore random --planner vi"), std::string::npos) << text;
+  EXPECT_EQ(text.find("skipping agent texplore"), std::string::npos) << text;
+}
