@@ -15,8 +15,8 @@ Figs. 12-14 (average task reward per step). Writes DIR/fig10_button_explore.png 
 DIR/results.md (a table) and the runs under DIR/runs/.
 --quick: 2 trials, 150 exploration and 60 task steps, 30 rollouts (a few minutes on 2 cores).
 
-Note: the runner's `--explore random` agent also acts at random in the task phase, so the
-random strategy's task rewards are those of random behaviour, not of greedy use of its model.
+In the task phase every strategy acts greedily on the model it learned (the runner switches
+exploration off, random action choice included), as in the paper.
 """
 import argparse
 import csv

@@ -282,7 +282,7 @@ int ModelBasedAgent::chooseAction(const rl_common::State& raw) {
   if (realTime_) {
     action = realTime_->act(s, due);
     lastRollouts_ = realTime_->lastActRollouts();
-  } else if (randomActions_) {
+  } else if (randomActions_ && exploring_) {
     action = 0;  // replaced below; no planning needed
     lastRollouts_ = 0;
   } else if (dp_ != nullptr) {
@@ -299,7 +299,9 @@ int ModelBasedAgent::chooseAction(const rl_common::State& raw) {
     action = planner_->bestAction(s);
   }
   lastPlanSeconds_ = std::chrono::duration<double>(Clock::now() - planStart).count();
-  if (randomActions_) {
+  if (!exploring_) {
+    // The planner's greedy action.
+  } else if (randomActions_) {
     action = rng_.uniformInt(0, task_.numActions - 1);
   } else if (boltzmann_) {
     const std::vector<double> q = plannerValues(s);
@@ -346,6 +348,7 @@ void ModelBasedAgent::lastAction(float reward) {
 void ModelBasedAgent::setIntrinsicEnabled(bool enabled) {
   // In real time the model thread reads these (atomic) flags when it takes its next view,
   // after the next experience.
+  exploring_ = enabled;
   if (exploration_ != nullptr) exploration_->setIntrinsicEnabled(enabled);
   if (tabular_ != nullptr) tabular_->setOptimistic(enabled);
   if (!realTime_) planner_->setModel(model_->view());

@@ -73,8 +73,11 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
 
   RewardBreakdown lastRewardBreakdown() const override { return lastBreakdown_; }
 
-  /// Switches the intrinsic rewards (R-MAX optimism for the tabular model) on or off (off:
-  /// plan on the external reward only).
+  /// Switches exploration on or off: the intrinsic rewards (R-MAX optimism for the tabular
+  /// model) and the exploratory action choice of --explore random, boltzmann and
+  /// epsilongreedy. Off: plan on the external reward only and act greedily on the planner, as
+  /// the paper's task phase (§5.1: "the agents act greedily with respect to their previously
+  /// learned transition models").
   void setIntrinsicEnabled(bool enabled);
   /// The tree model's current view (for evaluation); thread-safe. Null for tabular and m5tree
   /// models: use learnedModelView().
@@ -105,6 +108,7 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   bool epsilonGreedy_ = false;
   bool randomActions_ = false;
   bool boltzmann_ = false;
+  bool exploring_ = true;  ///< false after setIntrinsicEnabled(false): act greedily
   float tau_ = 0.2f;
   std::vector<float> binFactor_;  ///< --nstates bin width per feature (empty: no binning)
   // Synchronous mode owns model and planner; real-time mode hands them to realTime_ and keeps
