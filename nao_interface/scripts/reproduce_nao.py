@@ -2,7 +2,7 @@
 """The TEXPLORE-VANIR paper's Nao experiments (section 5.2, Figs. 10-14) on the simulated Nao.
 
 Usage: reproduce_nao.py [--quick] [--out DIR] [--trials N] [--jobs K] [--seed S]
-                        [--rollouts R] [--explore-steps E] [--task-steps T]
+                        [--rollouts R] [--explore-steps E] [--task-steps T] [--lambda L]
 
 For each exploration strategy (TEXPLORE-VANIR with v = 3, n = 10; random exploration) and each
 task (pink, button, mic), the standalone `experiment` runner runs --trials trials on the
@@ -62,6 +62,8 @@ def run_all(args, exe):
                    "--rollouts", str(args.rollouts), "--trials", str(args.trials),
                    "--jobs", str(args.jobs), "--seed", str(args.seed), "--eval-every", "0",
                    "--label", name, "--out", out, "--force", "--progress", "off"]
+            if args.lam is not None:
+                cmd += ["--lambda", repr(args.lam)]
             print(f"[reproduce nao] {name} / {task}: {' '.join(cmd)}", flush=True)
             subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
 
@@ -164,7 +166,8 @@ def table(args, res):
         f"# Nao arm experiments (TEXPLORE-VANIR paper section 5.2), simulated Nao",
         "",
         f"{args.trials} trials per strategy and task, {args.explore_steps} exploration steps then "
-        f"{args.task_steps} task steps, {args.rollouts} UCT rollouts per step, seed {args.seed}.",
+        f"{args.task_steps} task steps, {args.rollouts} UCT rollouts per step, UCT lambda "
+        f"{'0.1 (default)' if args.lam is None else args.lam}, seed {args.seed}.",
         "",
         "| strategy | trials that pressed the button while exploring | max pink seen while exploring (mean of trials / best) "
         "| pink task: mean reward per step | button task: mean reward per step | mic task: mean reward per step | mic task: trials with a cymbal hit (> 800) |",
@@ -195,6 +198,8 @@ def main():
     p.add_argument("--rollouts", type=int, default=None)
     p.add_argument("--explore-steps", type=int, default=None)
     p.add_argument("--task-steps", type=int, default=None)
+    p.add_argument("--lambda", dest="lam", type=float, default=None,
+                   help="UCT(lambda) of both strategies (default: the agent's own, 0.1)")
     args = p.parse_args()
     quick = dict(trials=2, explore_steps=150, task_steps=60, rollouts=30)
     full = dict(trials=13, explore_steps=400, task_steps=200, rollouts=100)

@@ -13,8 +13,11 @@ Experiments (each agent runs --trials trials through the standalone `experiment`
 Agents: TEXPLORE-VANIR (v=1, n=3), TEXPLORE greedy (v=0, n=0), the paper's comparison explorers
 on TEXPLORE's forest (random, competence, prederror, R-MAX-style, Boltzmann), the tabular random
 agent, and every other agent the registry offers when this runs (`experiment --list-agents`).
---quick uses 4 trials and shorter runs (under 15 minutes on 2 cores). The full run (30
-trials) takes about 3 hours on 2 cores with today's agents, about 5 with every comparison agent. Writes run folders,
+Every UCT agent plans with --lambda (1 unless given): with the agents' default 0.1, the original's,
+they fixate on self-loops in LightWorld and TEXPLORE-VANIR explores less than random actions (the
+README's "Known limits"); `--lambda 0.1` runs the original's setting.
+--quick uses 4 trials and shorter runs (8 minutes on 2 cores). The full run (30 trials, the
+paper's lengths) is estimated at 3-5 hours on 2 cores (not yet measured). Writes run folders,
 figures (PNG, PDF) per experiment and DIR/results.md with the final numbers and 95% intervals.
 A rerun resumes: finished trials are kept (use a new --out for a fresh run).
 """
@@ -72,7 +75,7 @@ def accepts(exe, args):
     return subprocess.run([exe] + args + ["--check"], capture_output=True).returncode == 0
 
 
-def agent_variants(exe, rollouts, log):
+def agent_variants(exe, rollouts, log, planner_opts=()):
     """(label, options) for every agent to compare."""
     variants = []
     for name in registry_agents(exe):
@@ -93,7 +96,7 @@ def agent_variants(exe, rollouts, log):
             variants.append((name, ["--agent", name]))
     out = []
     for label, opts in variants:
-        with_rollouts = opts + ["--rollouts", str(rollouts)]
+        with_rollouts = opts + ["--rollouts", str(rollouts)] + list(planner_opts)
         if accepts(exe, with_rollouts + ["--env", "lightworld"]):
             out.append((label, with_rollouts))
         elif accepts(exe, opts + ["--env", "lightworld"]):
@@ -103,10 +106,10 @@ def agent_variants(exe, rollouts, log):
     return out
 
 
-def ablation_variants(rollouts):
+def ablation_variants(rollouts, planner_opts=()):
     out = []
     for v, n in ((1, 3), (1, 0), (0, 3), (0, 0)):
-        opts = ["--agent", "texplore", "--rollouts", str(rollouts)]
+        opts = ["--agent", "texplore", "--rollouts", str(rollouts)] + list(planner_opts)
         if v or n:
             opts += ["--v", str(v), "--n", str(n)]
         out.append(("texplore-v%d-n%d" % (v, n), opts))
@@ -136,6 +139,10 @@ def main(argv=None):
     ap.add_argument("--experiment", action="append",
                     choices=["explore-task", "combined", "ablation"],
                     help="run only these experiments (default: all)")
+    ap.add_argument("--lambda", dest="lam", type=float, default=1.0,
+                    help="UCT(lambda) of every UCT agent (default 1, Monte-Carlo backups; the "
+                         "agents' own default, the original's 0.1, makes them fixate on "
+                         "self-loops in LightWorld: see the README's known limits)")
     ap.add_argument("--list", action="store_true",
                     help="print each experiment's agents and their options, then exit")
     args = ap.parse_args(argv)
@@ -151,10 +158,11 @@ def main(argv=None):
     rollouts = args.rollouts or rollouts
     out = args.out or os.path.join("results", "lightworld" + ("-quick" if args.quick else ""))
     exe = find_experiment()
+    planner_opts = ["--lambda", repr(args.lam)]
     if args.list:
-        for label, opts in agent_variants(exe, rollouts, lambda text: print(text)):
+        for label, opts in agent_variants(exe, rollouts, lambda text: print(text), planner_opts):
             print("explore-task, combined: %-20s %s" % (label, " ".join(opts)))
-        for label, opts in ablation_variants(rollouts):
+        for label, opts in ablation_variants(rollouts, planner_opts):
             print("ablation: %-20s %s" % (label, " ".join(opts)))
         return 0
     os.makedirs(out, exist_ok=True)
@@ -169,7 +177,7 @@ def main(argv=None):
     log("reproduce lightworld%s: %d trials per agent, %d rollouts per step, %d jobs, seed %d, "
         "into %s" % (" --quick" if args.quick else "", trials, rollouts, args.jobs, args.seed,
                      out))
-    agents = agent_variants(exe, rollouts, log)
+    agents = agent_variants(exe, rollouts, log, planner_opts)
     log("agents: " + ", ".join(label for label, _ in agents))
     common = ["--env", "lightworld", "--trials", str(trials), "--seed", str(args.seed),
               "--jobs", str(args.jobs), "--eval-samples", str(samples), "--progress", "off"]
@@ -179,7 +187,7 @@ def main(argv=None):
         ("combined", "Fig. 7: %d steps, intrinsic and external rewards combined" % combined,
          agents, ["--steps", str(combined)]),
         ("ablation", "Fig. 8: TEXPLORE-VANIR v/n ablation, %d steps combined" % ablation,
-         ablation_variants(rollouts), ["--steps", str(ablation)]),
+         ablation_variants(rollouts, planner_opts), ["--steps", str(ablation)]),
     ]
     wanted = set(args.experiment or [e[0] for e in experiments])
     tables = []
@@ -226,8 +234,9 @@ def main(argv=None):
         log("  figures in %s" % figs)
     elapsed = time.time() - start
     md = ["# LightWorld reproduction%s" % (" (quick)" if args.quick else ""), "",
-          "%d trials per agent, %d UCT rollouts per step, seed %d; run time %.1f min on %d jobs." %
-          (trials, rollouts, args.seed, elapsed / 60, args.jobs), "",
+          "%d trials per agent, %d UCT rollouts per step, UCT lambda %s, seed %d; run time %.1f "
+          "min on %d jobs." % (trials, rollouts, repr(args.lam), args.seed, elapsed / 60,
+                               args.jobs), "",
           "For reference, the paper's optimal policy earns %.1f over the 3000 task steps." %
           PAPER_OPTIMAL_TASK_REWARD, ""] + tables
     tmp = os.path.join(out, ".results.md.tmp")
