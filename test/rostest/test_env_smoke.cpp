@@ -7,21 +7,11 @@
 #include <rl_msgs/RLStateReward.h>
 #include <ros/ros.h>
 
-#include <functional>
 #include <vector>
 
-namespace {
+#include "rl_common/ros/spin_until.h"
 
-bool waitFor(const std::function<bool()>& done, double seconds) {
-  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
-  while (!done() && ros::WallTime::now() < end && ros::ok()) {
-    ros::spinOnce();
-    ros::WallDuration(0.01).sleep();
-  }
-  return done();
-}
-
-}  // namespace
+using rl_common::spinUntil;
 
 TEST(EnvSmoke, LightWorldDescriptionFirstStateAndAStep) {
   ros::NodeHandle nh;
@@ -38,7 +28,7 @@ TEST(EnvSmoke, LightWorldDescriptionFirstStateAndAStep) {
       "rl_env/rl_seed", 20, [&seeds](const rl_msgs::RLEnvSeedExperience::ConstPtr&) { ++seeds; });
   ros::Publisher actions = nh.advertise<rl_msgs::RLAction>("rl_agent/rl_action", 1);
 
-  ASSERT_TRUE(waitFor([&] { return !descriptions.empty(); }, 20.0)) << "no description";
+  ASSERT_TRUE(spinUntil([&] { return !descriptions.empty(); }, 20.0)) << "no description";
   const auto& desc = descriptions.front();
   EXPECT_EQ(desc.num_states, 17.0f);
   EXPECT_EQ(desc.num_actions, 6.0f);
@@ -47,16 +37,16 @@ TEST(EnvSmoke, LightWorldDescriptionFirstStateAndAStep) {
   EXPECT_FALSE(desc.episodic);
   EXPECT_EQ(desc.title, "Environment: LightWorld\n");
 
-  ASSERT_TRUE(waitFor([&] { return !states.empty(); }, 20.0)) << "no first state";
+  ASSERT_TRUE(spinUntil([&] { return !states.empty(); }, 20.0)) << "no first state";
   EXPECT_EQ(states.front().state.size(), 17u);
   EXPECT_EQ(states.front().reward, 0.0f);
   EXPECT_FALSE(states.front().terminal);
 
-  ASSERT_TRUE(waitFor([&] { return actions.getNumSubscribers() > 0; }, 20.0));
+  ASSERT_TRUE(spinUntil([&] { return actions.getNumSubscribers() > 0; }, 20.0));
   rl_msgs::RLAction a;
   a.action = 4;  // PICKUP
   actions.publish(a);
-  ASSERT_TRUE(waitFor([&] { return states.size() >= 2; }, 20.0)) << "no reply to an action";
+  ASSERT_TRUE(spinUntil([&] { return states.size() >= 2; }, 20.0)) << "no reply to an action";
   EXPECT_EQ(states.back().state.size(), 17u);
 }
 

@@ -7,21 +7,11 @@
 #include <rl_msgs/RLStateReward.h>
 #include <ros/ros.h>
 
-#include <functional>
 #include <limits>
 
-namespace {
+#include "rl_common/ros/spin_until.h"
 
-bool waitFor(const std::function<bool()>& done, double seconds) {
-  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
-  while (!done() && ros::WallTime::now() < end && ros::ok()) {
-    ros::spinOnce();
-    ros::WallDuration(0.005).sleep();
-  }
-  return done();
-}
-
-}  // namespace
+using rl_common::spinUntil;
 
 TEST(AgentEnv, EpisodesCompleteAndBadMessagesAreDropped) {
   ros::NodeHandle nh;
@@ -46,14 +36,14 @@ TEST(AgentEnv, EpisodesCompleteAndBadMessagesAreDropped) {
       "rl_agent/rl_reward_breakdown", 100,
       [&](const rl_msgs::RLRewardBreakdown::ConstPtr&) { ++breakdowns; });
 
-  ASSERT_TRUE(waitFor([&] { return infos >= 2; }, 90.0))
+  ASSERT_TRUE(spinUntil([&] { return infos >= 2; }, 90.0))
       << "episodes did not complete: " << actions << " actions, " << infos << " episodes";
   EXPECT_GT(actions, 10);
   EXPECT_GT(breakdowns, 10);
 
   // Malformed states, published as if by the environment: dropped, the agent keeps going.
   ros::Publisher bad = nh.advertise<rl_msgs::RLStateReward>("rl_env/rl_state_reward", 1);
-  ASSERT_TRUE(waitFor([&] { return bad.getNumSubscribers() > 0; }, 10.0));
+  ASSERT_TRUE(spinUntil([&] { return bad.getNumSubscribers() > 0; }, 10.0));
   rl_msgs::RLStateReward wrongLength;
   wrongLength.state = {1.0f, 2.0f};
   bad.publish(wrongLength);
@@ -61,7 +51,7 @@ TEST(AgentEnv, EpisodesCompleteAndBadMessagesAreDropped) {
   nan.state = {0.0f, 0.0f, std::numeric_limits<float>::quiet_NaN(), 1.0f};
   bad.publish(nan);
   const int before = actions;
-  ASSERT_TRUE(waitFor([&] { return actions > before + 20; }, 30.0)) << "agent stopped acting";
+  ASSERT_TRUE(spinUntil([&] { return actions > before + 20; }, 30.0)) << "agent stopped acting";
 }
 
 int main(int argc, char** argv) {

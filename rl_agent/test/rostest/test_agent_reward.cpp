@@ -6,20 +6,9 @@
 #include <rl_msgs/RLStateReward.h>
 #include <ros/ros.h>
 
-#include <functional>
+#include "rl_common/ros/spin_until.h"
 
-namespace {
-
-bool waitFor(const std::function<bool()>& done, double seconds) {
-  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
-  while (!done() && ros::WallTime::now() < end && ros::ok()) {
-    ros::spinOnce();
-    ros::WallDuration(0.005).sleep();
-  }
-  return done();
-}
-
-}  // namespace
+using rl_common::spinUntil;
 
 TEST(AgentReward, EarnsTheRewardWithinTheActions) {
   ros::NodeHandle nh;
@@ -45,7 +34,7 @@ TEST(AgentReward, EarnsTheRewardWithinTheActions) {
                                                   if (actionsAtGoal < 0 && reward >= minReward)
                                                     actionsAtGoal = actions;
                                                 });
-  ASSERT_TRUE(waitFor([&] { return actionsAtGoal >= 0; }, 60.0))
+  ASSERT_TRUE(spinUntil([&] { return actionsAtGoal >= 0; }, 60.0))
       << "earned " << reward << " in " << actions << " actions; expected " << minReward;
   // The listener may have joined a few actions late: the count is a lower bound.
   EXPECT_LE(actionsAtGoal, maxActions)

@@ -9,22 +9,12 @@
 #include <rl_msgs/Reset.h>
 #include <ros/ros.h>
 
-#include <functional>
 #include <string>
 #include <vector>
 
-namespace {
+#include "rl_common/ros/spin_until.h"
 
-bool waitFor(const std::function<bool()>& done, double seconds) {
-  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
-  while (!done() && ros::WallTime::now() < end && ros::ok()) {
-    ros::spinOnce();
-    ros::WallDuration(0.005).sleep();
-  }
-  return done();
-}
-
-}  // namespace
+using rl_common::spinUntil;
 
 TEST(EnvNode, HandshakeStepsResetsAndBadActions) {
   ros::NodeHandle nh;
@@ -50,7 +40,7 @@ TEST(EnvNode, HandshakeStepsResetsAndBadActions) {
   ros::Publisher actions = nh.advertise<rl_msgs::RLAction>("rl_agent/rl_action", 10);
   ros::Publisher info = nh.advertise<rl_msgs::RLExperimentInfo>("rl_agent/rl_experiment_info", 1);
 
-  ASSERT_TRUE(waitFor([&] { return !states.empty(); }, 30.0)) << "no first state";
+  ASSERT_TRUE(spinUntil([&] { return !states.empty(); }, 30.0)) << "no first state";
   // Description first, then both seeds, then the first state (reward 0, not terminal).
   ASSERT_GE(order.size(), 4u);
   EXPECT_EQ(order[0], "D");
@@ -64,13 +54,13 @@ TEST(EnvNode, HandshakeStepsResetsAndBadActions) {
   EXPECT_EQ(states[0].reward, 0.0f);
   EXPECT_FALSE(states[0].terminal);
 
-  ASSERT_TRUE(waitFor([&] { return actions.getNumSubscribers() > 0; }, 10.0));
+  ASSERT_TRUE(spinUntil([&] { return actions.getNumSubscribers() > 0; }, 10.0));
   rl_msgs::RLAction a;
   for (int i = 0; i < 5; ++i) {
     const std::size_t before = states.size();
     a.action = i % 4;
     actions.publish(a);
-    ASSERT_TRUE(waitFor([&] { return states.size() > before; }, 10.0)) << "no reply, step " << i;
+    ASSERT_TRUE(spinUntil([&] { return states.size() > before; }, 10.0)) << "no reply, step " << i;
     EXPECT_EQ(states.back().state.size(), 2u);
     EXPECT_TRUE(states.back().reward == -1.0f || states.back().reward == 0.0f);
   }
@@ -86,15 +76,15 @@ TEST(EnvNode, HandshakeStepsResetsAndBadActions) {
   EXPECT_EQ(states.size(), before);
   a.action = 0;
   actions.publish(a);
-  ASSERT_TRUE(waitFor([&] { return states.size() > before; }, 10.0)) << "node stopped serving";
+  ASSERT_TRUE(spinUntil([&] { return states.size() > before; }, 10.0)) << "node stopped serving";
 
   // An episode report resets the environment: a start state with reward 0 follows.
-  ASSERT_TRUE(waitFor([&] { return info.getNumSubscribers() > 0; }, 10.0));
+  ASSERT_TRUE(spinUntil([&] { return info.getNumSubscribers() > 0; }, 10.0));
   const std::size_t beforeInfo = states.size();
   rl_msgs::RLExperimentInfo e;
   e.episode_number = 0;
   info.publish(e);
-  ASSERT_TRUE(waitFor([&] { return states.size() > beforeInfo; }, 10.0));
+  ASSERT_TRUE(spinUntil([&] { return states.size() > beforeInfo; }, 10.0));
   EXPECT_EQ(states.back().reward, 0.0f);
   EXPECT_GE(states.back().state[1], 6.0f);  // TwoRooms starts in the right room
 
@@ -105,10 +95,10 @@ TEST(EnvNode, HandshakeStepsResetsAndBadActions) {
   srv.request.seed = 77;
   ASSERT_TRUE(ros::service::call("rl_env/reset", srv));
   EXPECT_TRUE(srv.response.success);
-  ASSERT_TRUE(waitFor([&] { return states.size() > beforeInfo + 1; }, 10.0));
+  ASSERT_TRUE(spinUntil([&] { return states.size() > beforeInfo + 1; }, 10.0));
   const auto first = states.back().state;
   ASSERT_TRUE(ros::service::call("rl_env/reset", srv));
-  ASSERT_TRUE(waitFor([&] { return states.size() > beforeInfo + 2; }, 10.0));
+  ASSERT_TRUE(spinUntil([&] { return states.size() > beforeInfo + 2; }, 10.0));
   EXPECT_EQ(states.back().state, first);
 }
 
