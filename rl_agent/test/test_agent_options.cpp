@@ -158,3 +158,20 @@ TEST(AgentOptions, PathVisitsIsAUctPlannerOptionOffByDefault) {
                 .find("needs a UCT planner"),
             std::string::npos);
 }
+
+TEST(AgentOptions, NstatesTakesOneCountOrOnePerFeature) {
+  EXPECT_EQ(parse({"--agent", "texplore"}).nstates, (std::vector<int>{0}));
+  EXPECT_FALSE(rl_agent::binsStates(parse({"--agent", "texplore"})));
+  EXPECT_EQ(parse({"--agent", "texplore", "--nstates", "10"}).nstates, (std::vector<int>{10}));
+  const AgentOptions o = parse({"--agent", "texplore", "--nstates", "30,12,0"});
+  EXPECT_EQ(o.nstates, (std::vector<int>{30, 12, 0}));
+  EXPECT_TRUE(rl_agent::binsStates(o));
+  EXPECT_NO_THROW(rl_agent::checkStatesPerDim(o, 3));
+  EXPECT_THROW(rl_agent::checkStatesPerDim(o, 2), std::invalid_argument);
+  for (const char* bad : {"", "30,", ",4", "3.5", "a,b", "4 5"}) {
+    EXPECT_NE(errorOf({"--agent", "texplore", "--nstates", bad}).find("separated by commas"),
+              std::string::npos)
+        << "'" << bad << "'";
+  }
+  EXPECT_NE(errorOf({"--agent", "texplore", "--nstates", "3,-1"}).find(">= 0"), std::string::npos);
+}

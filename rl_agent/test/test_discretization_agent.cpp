@@ -48,13 +48,13 @@ TEST(DiscretizationAgent, BinsAsTheOriginal) {
 TEST(DiscretizationAgent, RegistryWrapsModelFreeAgentsWithNstates) {
   rl_agent::AgentOptions o;
   o.agent = "qlearner";
-  o.nstates = 4;
+  o.nstates = {4};
   rl_common::EnvironmentDescription d;
   d.numActions = 2;
   d.minFeatures = {0.0f};
   d.maxFeatures = {1.0f};
   auto agent = rl_agent::makeAgent(o, d);
   EXPECT_NE(dynamic_cast<rl_agent::DiscretizationAgent*>(agent.get()), nullptr);
-  o.nstates = 0;
+  o.nstates = {0};
   EXPECT_EQ(dynamic_cast<rl_agent::DiscretizationAgent*>(rl_agent::makeAgent(o, d).get()), nullptr);
 }

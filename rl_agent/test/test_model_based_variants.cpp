@@ -66,12 +66,12 @@ TEST(ModelBasedVariants, M5TreeModelRuns) {
   o.rollouts = 0;
   EXPECT_THROW(rl_agent::makeAgent(o, test_mdps::TwoRoomGrid::describe()),
                std::invalid_argument);  // vi on a continuous model needs a state grid
-  o.nstates = 6;
+  o.nstates = {6};
   auto agent = rl_agent::makeAgent(o, test_mdps::TwoRoomGrid::describe());
   test_mdps::TwoRoomGrid env;
   test_mdps::runEpisode(*agent, env, 30);
   o.planner = "uct";
-  o.nstates = 0;
+  o.nstates = {0};
   o.rollouts = 20;
   auto uct = rl_agent::makeAgent(o, test_mdps::TwoRoomGrid::describe());
   test_mdps::runEpisode(*uct, env, 30);
@@ -125,4 +125,18 @@ TEST(ModelBasedVariants, SavesTheDynamicProgrammingPolicy) {
   auto saved = rl_agent::makeAgent(replay, test_mdps::TwoRoomGrid::describe());
   EXPECT_EQ(test_mdps::runEpisode(*saved, env, 100), 10);
   std::remove(f.c_str());
+}
+
+TEST(ModelBasedVariants, NstatesPerFeature) {
+  auto o = options("tree", "uct", "unknown");
+  o.nstates = {6, 4, 1};  // three entries for two features
+  try {
+    rl_agent::makeAgent(o, test_mdps::TwoRoomGrid::describe());
+    ADD_FAILURE() << "--nstates of the wrong length was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("--nstates 6,4,1 has 3 entries"), std::string::npos)
+        << e.what();
+  }
+  o.nstates = {6, 0};  // x binned by its cell width, y as it is: the grid is unchanged
+  EXPECT_LT(totalSteps(o, 10), 10 * 300);
 }

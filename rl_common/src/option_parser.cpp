@@ -103,6 +103,23 @@ template <>
 std::string parseOptionValue<std::string>(const std::string& text) {
   return text;
 }
+template <>
+std::vector<int> parseOptionValue<std::vector<int>>(const std::string& text) {
+  std::vector<int> out;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    const std::string item =
+        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    try {
+      out.push_back(checkedIntegral<int>(item));
+    } catch (const std::invalid_argument&) {
+      throw std::invalid_argument("expected integers separated by commas, e.g. 30,12,0");
+    }
+    if (comma == std::string::npos) return out;
+    start = comma + 1;
+  }
+}
 
 template <class T>
 std::string formatOptionValue(const T& value) {
@@ -110,6 +127,12 @@ std::string formatOptionValue(const T& value) {
     return value ? "true" : "false";
   } else if constexpr (std::is_same_v<T, std::string>) {
     return value;
+  } else if constexpr (std::is_same_v<T, std::vector<int>>) {
+    std::string out;
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      out += (i ? "," : "") + std::to_string(value[i]);
+    }
+    return out;
   } else {
     std::ostringstream os;
     if constexpr (std::is_floating_point_v<T>) {
@@ -135,6 +158,7 @@ template std::string formatOptionValue<unsigned long long>(const unsigned long l
 template std::string formatOptionValue<float>(const float&);
 template std::string formatOptionValue<double>(const double&);
 template std::string formatOptionValue<std::string>(const std::string&);
+template std::string formatOptionValue<std::vector<int>>(const std::vector<int>&);
 
 OptionParser::OptionParser(std::string program, std::string synopsis)
     : program_(std::move(program)), synopsis_(std::move(synopsis)) {}

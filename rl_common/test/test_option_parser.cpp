@@ -166,3 +166,18 @@ TEST(OptionParser, DuplicateDeclarationIsAProgrammingError) {
   EXPECT_THROW(p.value("gamma", &c.gamma, "again"), std::invalid_argument);
   EXPECT_THROW(p.value("help", &c.gamma, "reserved"), std::invalid_argument);
 }
+
+TEST(OptionParser, IntegerListsAreCommaSeparated) {
+  std::vector<int> bins{0};
+  OptionParser p("prog", "");
+  p.value("nstates", &bins, "bins per feature");
+  p.parse(std::vector<std::string>{"--nstates", "30,12,0"});
+  EXPECT_EQ(bins, (std::vector<int>{30, 12, 0}));
+  p.parse(std::vector<std::string>{"--nstates=-4"});
+  EXPECT_EQ(bins, (std::vector<int>{-4}));
+  EXPECT_EQ(rl_common::formatOptionValue(std::vector<int>{30, 12, 0}), "30,12,0");
+  for (const char* bad : {"", "1,", "1,,2", "x", "1.5,2"}) {
+    EXPECT_THROW(p.parse(std::vector<std::string>{"--nstates", bad}), OptionError) << bad;
+  }
+  EXPECT_NE(p.help().find("--nstates <int[,int...]>"), std::string::npos) << p.help();
+}

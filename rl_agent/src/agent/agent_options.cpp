@@ -61,7 +61,14 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
   p.value("v|b", &o->v, "VANIR variance (tree disagreement) reward coefficient", atLeast(0.0f));
   p.value("n", &o->n, "VANIR novelty reward coefficient", atLeast(0.0f));
   p.value("history", &o->history, "action-history length", atLeast(0));
-  p.value("nstates", &o->nstates, "bins per feature (0: none)", atLeast(0));
+  p.value("nstates", &o->nstates,
+          "bins per feature: one count for every feature, or one per feature, comma-separated "
+          "(0: that feature is not binned; 0 alone: no binning)",
+          rl_common::OptionParser::Check<std::vector<int>>([](const std::vector<int>& bins) {
+            const bool negative =
+                std::any_of(bins.begin(), bins.end(), [](int n) { return n < 0; });
+            return negative ? std::string("every entry must be >= 0") : std::string();
+          }));
   p.value("k", &o->k, "Dyna model updates per step", atLeast(0));
   p.value("filename", &o->filename, "policy file");
   p.flag("pathvisits", &o->pathvisits, true,
@@ -73,6 +80,19 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
           "time at --actrate)",
           atLeast(0L));
   p.value("tau", &o->tau, "Boltzmann temperature (--explore boltzmann)", greaterThan(0.0f));
+}
+
+bool binsStates(const AgentOptions& o) {
+  return std::any_of(o.nstates.begin(), o.nstates.end(), [](int n) { return n > 0; });
+}
+
+void checkStatesPerDim(const AgentOptions& o, std::size_t numFeatures) {
+  if (o.nstates.size() != 1 && o.nstates.size() != numFeatures) {
+    throw std::invalid_argument("--nstates " + rl_common::formatOptionValue(o.nstates) + " has " +
+                                std::to_string(o.nstates.size()) +
+                                " entries; give one, or one per feature (" +
+                                std::to_string(numFeatures) + ")");
+  }
 }
 
 namespace {
@@ -171,7 +191,7 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
           "option --explore " + o.explore +
           " is not available with --model m5tree; valid: " + rl_common::joinNames(selectionOnly));
     }
-    if (o.model == "m5tree" && !searchPlanner && o.nstates <= 0) {
+    if (o.model == "m5tree" && !searchPlanner && !binsStates(o)) {
       throw rl_common::OptionError("--model m5tree with --planner " + o.planner +
                                    " needs --nstates > 0 (the planner's state grid)");
     }

@@ -93,9 +93,10 @@ std::unique_ptr<rl_common::Agent> wrap(std::unique_ptr<rl_common::Agent> agent,
   // the model-based agent bins its own inputs (except for m5tree).
   const bool modelFree =
       o.agent == "qlearner" || o.agent == "sarsa" || o.agent == "dyna" || o.agent == "savedpolicy";
-  if (o.nstates <= 0 || !modelFree) return agent;
-  return std::make_unique<DiscretizationAgent>(std::move(agent), std::vector<int>{o.nstates},
-                                               d.minFeatures, d.maxFeatures);
+  if (!binsStates(o) || !modelFree) return agent;
+  checkStatesPerDim(o, d.minFeatures.size());
+  return std::make_unique<DiscretizationAgent>(std::move(agent), o.nstates, d.minFeatures,
+                                               d.maxFeatures);
 }
 
 }  // namespace

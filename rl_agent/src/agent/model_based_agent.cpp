@@ -59,7 +59,7 @@ UctPlanner::Config plannerConfig(const AgentOptions& o,
   c.rewardRange = t.rewardRange();
   c.featMin = t.minFeatures;
   c.featMax = t.maxFeatures;
-  if (o.nstates > 0) c.statesPerDim = {o.nstates};
+  if (binsStates(o)) c.statesPerDim = o.nstates;
   c.history = o.history;
   c.trackActual = true;
   c.countPathVisits = o.pathvisits;
@@ -72,7 +72,7 @@ std::unique_ptr<StateSpacePlanner> dpPlanner(const AgentOptions& o,
   StateSpacePlanner::Config c;
   c.numActions = t.numActions;
   c.gamma = std::min(static_cast<double>(o.gamma), 0.999999);
-  if (o.nstates > 0) {  // the planner's grid, as the original's planners' statesPerDim
+  if (binsStates(o)) {  // the planner's grid, as the original's planners' statesPerDim
     c.featMin = t.minFeatures;
     c.featMax = t.maxFeatures;
     c.statesPerDim = o.nstates;
@@ -99,6 +99,7 @@ ModelBasedAgent::ModelBasedAgent(const AgentOptions& options,
         "ModelBasedAgent::ModelBasedAgent(): task has no actions or "
         "features");
   }
+  if (binsStates(options)) checkStatesPerDim(options, task.minFeatures.size());
   ExplorerSettings settings;
   settings.v = options.v;
   settings.n = options.n;
@@ -115,11 +116,12 @@ ModelBasedAgent::ModelBasedAgent(const AgentOptions& options,
   boltzmann_ = explorer->boltzmann;
   tau_ = explorer->tau;
 
-  if (options.nstates > 0 && options.model != "m5tree") {
+  if (binsStates(options) && options.model != "m5tree") {
     binFactor_.resize(task.minFeatures.size());
     for (std::size_t j = 0; j < binFactor_.size(); ++j) {
+      const int n = options.nstates.size() == 1 ? options.nstates[0] : options.nstates[j];
       binFactor_[j] =
-          (task.maxFeatures[j] - task.minFeatures[j]) / static_cast<float>(options.nstates);
+          n > 0 ? (task.maxFeatures[j] - task.minFeatures[j]) / static_cast<float>(n) : 0.0f;
     }
   }
 
@@ -149,7 +151,7 @@ ModelBasedAgent::ModelBasedAgent(const AgentOptions& options,
     model = std::move(m);
   } else if (options.model == "m5tree") {
     if (!selectionOnly(options.explore)) reject("m5tree");
-    if (!isUct(options.planner) && options.nstates <= 0) {
+    if (!isUct(options.planner) && !binsStates(options)) {
       throw std::invalid_argument(
           "ModelBasedAgent::ModelBasedAgent(): --model m5tree with --planner " + options.planner +
           " needs --nstates > 0 (the planner's state grid)");

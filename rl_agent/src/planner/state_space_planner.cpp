@@ -20,15 +20,23 @@ StateSpacePlanner::StateSpacePlanner(const Config& config, std::uint64_t seed)
         "StateSpacePlanner::StateSpacePlanner(): need tolerance > 0, maxSteps >= 0, "
         "maxStates >= 1 and maxIterations >= 1");
   }
-  if (config.statesPerDim < 0 ||
-      (config.statesPerDim > 0 &&
-       (config.featMin.empty() || config.featMin.size() != config.featMax.size()))) {
-    throw std::invalid_argument(
-        "StateSpacePlanner::StateSpacePlanner(): statesPerDim needs the feature ranges");
-  }
-  for (std::size_t j = 0; config.statesPerDim > 0 && j < config.featMin.size(); ++j) {
-    binFactor_.push_back((config.featMax[j] - config.featMin[j]) /
-                         static_cast<float>(config.statesPerDim));
+  const auto& bins = config.statesPerDim;
+  if (!bins.empty()) {
+    if (config.featMin.empty() || config.featMin.size() != config.featMax.size() ||
+        (bins.size() != 1 && bins.size() != config.featMin.size())) {
+      throw std::invalid_argument(
+          "StateSpacePlanner::StateSpacePlanner(): statesPerDim needs the feature ranges and "
+          "one entry, or one per feature");
+    }
+    for (std::size_t j = 0; j < config.featMin.size(); ++j) {
+      const int n = bins.size() == 1 ? bins[0] : bins[j];
+      if (n < 0) {
+        throw std::invalid_argument(
+            "StateSpacePlanner::StateSpacePlanner(): statesPerDim entries must be >= 0");
+      }
+      binFactor_.push_back(n > 0 ? (config.featMax[j] - config.featMin[j]) / static_cast<float>(n)
+                                 : 0.0f);
+    }
   }
 }
 

@@ -30,7 +30,8 @@ class OptionError : public std::invalid_argument {
 };
 
 /// Converts option text to a value; throws std::invalid_argument with what was expected.
-/// Defined for bool, int, long, unsigned, unsigned long (long), float, double and std::string.
+/// Defined for bool, int, long, unsigned, unsigned long (long), float, double, std::string and
+/// std::vector<int> (a comma-separated list, e.g. "30,12,0").
 template <class T>
 T parseOptionValue(const std::string& text);
 
@@ -135,6 +136,8 @@ class OptionParser {
       return "<true|false>";
     } else if constexpr (std::is_integral_v<T>) {
       return "<int>";
+    } else if constexpr (std::is_same_v<T, std::vector<int>>) {
+      return "<int[,int...]>";
     } else if constexpr (std::is_floating_point_v<T>) {
       return "<number>";
     } else {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "rl_common/option_parser.h"
 
@@ -30,7 +31,9 @@ struct AgentOptions {
   float v = 0.0f;        ///< VANIR variance coefficient (--v, --b)
   float n = 0.0f;        ///< VANIR novelty coefficient (--n)
   int history = 0;       ///< action-history length
-  int nstates = 0;       ///< bins per feature (0: no discretisation)
+  /// Bins per feature (--nstates): one count for every feature, as the original's option, or
+  /// one per feature (a feature with 0 is not binned); {0}: no discretisation.
+  std::vector<int> nstates{0};
   int k = 1000;          ///< Dyna model updates per step
   std::string filename;  ///< policy file (savedpolicy reads it; others write it at shutdown)
   long rollouts = 0;     ///< UCT rollouts per step, synchronously (0: real time at actrate)
@@ -39,6 +42,12 @@ struct AgentOptions {
   /// countPathVisits); off by default, as the original.
   bool pathvisits = false;
 };
+
+/// True if --nstates bins some feature.
+bool binsStates(const AgentOptions& options);
+
+/// Throws std::invalid_argument unless --nstates has one entry or `numFeatures` entries.
+void checkStatesPerDim(const AgentOptions& options, std::size_t numFeatures);
 
 /// Declares every agent option but --seed on `parser`, writing into `options`. Programs declare
 /// --seed themselves: the agent node uses it as is, the experiment runner derives the agent's

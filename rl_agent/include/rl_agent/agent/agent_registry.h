@@ -2,8 +2,9 @@
  * The agent registry: every agent of the suite under the original's --agent names, plus
  * `optimal` (value iteration on the environment's true model; built only through the
  * makeAgent overload that receives that model: the experiment runner passes its environment,
- * the agent node its own copy of the environment named by --env). With --nstates > 0 the
- * model-free agents and savedpolicy are wrapped in a DiscretizationAgent, as in the original.
+ * the agent node its own copy of the environment named by --env). With --nstates binning a
+ * feature, the model-free agents and savedpolicy are wrapped in a DiscretizationAgent, as in the
+ * original.
  */
 #pragma once
 

@@ -31,7 +31,10 @@
  * planner's Q-values with temperature --tau).
  * With `--history k` the last k actions (one-hot) are appended to the model's input. With
  * `--nstates n` (not for m5tree) states are binned as the original's DiscretizationAgent
- * before the model sees them.
+ * before the model sees them; `--nstates n1,n2,...` gives each feature its own count (0: not
+ * binned), as the original's runner did for its car domains. Binning matters for continuous,
+ * noisy robot states: there every relative change is a class of its own, so the trees'
+ * disagreement stays high everywhere, and UCT meets every imagined state only once.
  */
 #pragma once
 

@@ -41,10 +41,11 @@ class StateSpacePlanner : public rl_common::Planner {
     int maxSteps = 100;               ///< expand states within this many model steps of a root
     std::size_t maxStates = 1000000;  ///< table size limit
     long maxIterations = 100000;      ///< solver's own cap per plan()
-    /// Bins per feature for continuous models (0: states are used as they are). States (roots
-    /// and predicted successors) are binned as the original's discretisation: factor =
-    /// (max − min)/n, bin = int((s ± factor/2)/factor) (+ for s > 0), s = factor · bin.
-    int statesPerDim = 0;
+    /// Bins per feature for continuous models: empty, or one count for every feature, or one
+    /// per feature (0: that feature is used as it is). States (roots and predicted successors)
+    /// are binned as the original's discretisation: factor = (max − min)/n,
+    /// bin = int((s ± factor/2)/factor) (+ for s > 0), s = factor · bin.
+    std::vector<int> statesPerDim;
     std::vector<float> featMin, featMax;  ///< declared ranges (needed with statesPerDim)
   };
 
