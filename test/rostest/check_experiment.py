@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
-"""Checks a running lightworld_experiment.launch: waits until the experiment node reports that
-it finished, then asserts that the run folder holds the expected logs and that actions and
-rewards flowed (rl_agent/rl_action, rl_agent/rl_reward_breakdown)."""
+"""Checks a running experiment launch file (lightworld_experiment.launch,
+nao_arm_exploration.launch): waits until the experiment node reports that it finished, then
+asserts that the run folder holds the expected logs and that actions and rewards flowed
+(rl_agent/rl_action, rl_agent/rl_reward_breakdown). Parameters: ~out, ~steps, ~trials,
+~num_actions (the environment's), ~seed (the run seed), ~timeout (seconds)."""
 import csv
 import os
 import unittest
@@ -12,7 +14,7 @@ from rl_msgs.msg import RLAction, RLRewardBreakdown
 from std_msgs.msg import String
 
 
-class LightWorldExperiment(unittest.TestCase):
+class Experiment(unittest.TestCase):
     def setUp(self):
         self.progress = []
         self.actions = []
@@ -26,7 +28,8 @@ class LightWorldExperiment(unittest.TestCase):
         out = rospy.get_param("~out")
         steps = int(rospy.get_param("~steps"))
         trials = int(rospy.get_param("~trials"))
-        deadline = rospy.Time.now() + rospy.Duration(100)
+        num_actions = int(rospy.get_param("~num_actions"))
+        deadline = rospy.Time.now() + rospy.Duration(float(rospy.get_param("~timeout", 100)))
         while not rospy.is_shutdown() and rospy.Time.now() < deadline:
             if any(p.startswith("finished") for p in self.progress):
                 break
@@ -41,7 +44,7 @@ class LightWorldExperiment(unittest.TestCase):
             self.assertEqual(len(rows), steps, "steps-%03d.csv" % t)
             self.assertEqual([int(r["step"]) for r in rows], list(range(steps)))
             actions = {int(r["action"]) for r in rows}
-            self.assertTrue(actions <= set(range(6)), actions)
+            self.assertTrue(actions <= set(range(num_actions)), actions)
             self.assertGreater(len(actions), 1, "the agent always took the same action")
             # TEXPLORE-VANIR reports its novelty reward for the steps.
             self.assertTrue(any(r["novelty"] not in ("", "0") for r in rows))
@@ -52,13 +55,13 @@ class LightWorldExperiment(unittest.TestCase):
         with open(os.path.join(out, "run.csv")) as f:
             run = {r["name"]: r["value"] for r in csv.DictReader(f)}
         self.assertIn("suite_version", run)
-        self.assertEqual(run["run_seed"], "3")
+        self.assertEqual(run["run_seed"], str(rospy.get_param("~seed")))
         # Actions and rewards went over the topics while we listened.
         self.assertGreater(len(self.actions), 0)
         self.assertGreater(len(self.breakdowns), 0)
-        self.assertTrue(all(0 <= a < 6 for a in self.actions))
+        self.assertTrue(all(0 <= a < num_actions for a in self.actions))
 
 
 if __name__ == "__main__":
-    rospy.init_node("check_lightworld_experiment")
-    rostest.rosrun("rl_texplore_tests", "lightworld_experiment", LightWorldExperiment)
+    rospy.init_node("check_experiment")
+    rostest.rosrun("rl_texplore_tests", "experiment", Experiment)
