@@ -2,8 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
 #include <vector>
+
+#include "rl_agent/agent/agent_registry.h"
+#include "rl_agent/agent/model_based_agent.h"
 
 namespace {
 
@@ -189,4 +193,42 @@ TEST(TrialRunner, EpisodicPhasesRestartEpisodesWithinTheBudget) {
   EXPECT_FALSE(log.episodes[2].terminal);
   EXPECT_EQ(log.episodes[1].phase, rl_experiment::Phase::kExplore);  // starts at step 3
   EXPECT_EQ(log.episodes[2].phase, rl_experiment::Phase::kTask);     // starts at step 6
+}
+
+namespace {
+
+// The reward a model-based agent's learned model predicts at the countdown state `s`.
+float learnedReward(const rl_common::Agent& agent, float s) {
+  const auto view = dynamic_cast<const rl_agent::ModelBasedAgent&>(agent).learnedModelView();
+  return view->query({s}, 0).reward;
+}
+
+std::unique_ptr<rl_common::Agent> tabularAgent(const rl_common::Environment& env) {
+  rl_agent::AgentOptions o;
+  o.agent = "modelbased";
+  o.model = "tabular";
+  o.explore = "random";
+  o.planner = "vi";
+  return rl_agent::makeAgent(o, env.describe());
+}
+
+}  // namespace
+
+TEST(TrialRunner, TaskPhaseGivesTheExplorationStepsTheirRewards) {
+  for (bool given : {true, false}) {
+    Countdown env(100, false);
+    auto agent = tabularAgent(env);
+    rl_experiment::TrialLimits limits;
+    limits.exploreSteps = 5;  // states 100 .. 96, each step's reward 1 hidden
+    limits.taskSteps = 3;
+    limits.giveTaskRewards = given;
+    rl_experiment::TrialRunner(limits).run(env, *agent, nullptr);
+    const auto& mb = dynamic_cast<const rl_agent::ModelBasedAgent&>(*agent);
+    EXPECT_EQ(mb.recordedSteps(), given ? 7u : 0u);  // the last task step is never learned
+    // Steps 0-3 were learned while exploring; step 4's reward arrives with the first task call.
+    for (float s : {100.0f, 98.0f, 96.0f}) {
+      EXPECT_FLOAT_EQ(learnedReward(*agent, s), given ? 1.0f : 0.0f) << "state " << s;
+    }
+    EXPECT_FLOAT_EQ(learnedReward(*agent, 95.0f), 1.0f);  // a task step: seen either way
+  }
 }

@@ -91,6 +91,72 @@ std::unique_ptr<StateSpacePlanner> dpPlanner(const AgentOptions& o,
 
 }  // namespace
 
+ExplorerSettings ModelBasedAgent::explorerSettings() const {
+  ExplorerSettings settings;
+  settings.v = options_.v;
+  settings.n = options_.n;
+  settings.m = options_.m;
+  settings.tau = options_.tau;
+  settings.featMin = task_.minFeatures;
+  settings.featMax = task_.maxFeatures;
+  settings.seed = rl_common::Random::deriveSeed(options_.seed, "regions");
+  const float rmax = task_.maxReward > 0.0f ? task_.maxReward : 1.0f;
+  settings.rmax = rmax / (1.0f - std::min(options_.gamma, 0.999f));  // the original's qmax
+  return settings;
+}
+
+std::unique_ptr<rl_common::MDPModel> ModelBasedAgent::makeModel() {
+  exploration_ = nullptr;
+  tabular_ = nullptr;
+  std::unique_ptr<rl_common::MDPModel> model;
+  const auto explorer = explorerRegistry().create(options_.explore, explorerSettings());
+  const auto reject = [&](const char* modelName) {
+    throw std::invalid_argument("ModelBasedAgent::ModelBasedAgent(): --explore " +
+                                options_.explore + " is not available with --model " + modelName);
+  };
+  if (options_.model == "tree") {
+    auto m = std::make_unique<ExplorationModel>(
+        modelConfig(options_, task_), rl_common::Random::deriveSeed(options_.seed, "model"),
+        explorer->rewards, explorer->learners);
+    exploration_ = m.get();
+    model = std::move(m);
+  } else if (options_.model == "tabular") {
+    const bool unknown = options_.explore == "unknown";
+    if (!selectionOnly(options_.explore) && !unknown) reject("tabular");
+    TabularModel::Config c;
+    c.numActions = task_.numActions;
+    c.numFeatures = static_cast<int>(task_.minFeatures.size());
+    c.m = options_.m;
+    c.optimistic = unknown;
+    c.rmax = explorerSettings().rmax;
+    auto m = std::make_unique<TabularModel>(c);
+    tabular_ = m.get();
+    model = std::move(m);
+  } else if (options_.model == "m5tree") {
+    if (!selectionOnly(options_.explore)) reject("m5tree");
+    if (!isUct(options_.planner) && !binsStates(options_)) {
+      throw std::invalid_argument(
+          "ModelBasedAgent::ModelBasedAgent(): --model m5tree with --planner " + options_.planner +
+          " needs --nstates > 0 (the planner's state grid)");
+    }
+    M5Model::Config c;
+    c.numActions = task_.numActions;
+    c.featMin = task_.minFeatures;
+    c.featMax = task_.maxFeatures;
+    c.extraInputs = options_.history * task_.numActions;
+    c.relativeTransitions = options_.reltrans;
+    c.episodic = task_.episodic;
+    c.rewardRange = std::max(task_.rewardRange(), 1e-6f);
+    model = std::make_unique<M5Model>(c);
+  } else {
+    throw std::invalid_argument("ModelBasedAgent::ModelBasedAgent(): unknown model '" +
+                                options_.model + "'; valid: tabular, tree, m5tree");
+  }
+
+  modelPtr_ = model.get();
+  return model;
+}
+
 ModelBasedAgent::ModelBasedAgent(const AgentOptions& options,
                                  const rl_common::EnvironmentDescription& task)
     : options_(options), task_(task), rng_(rl_common::Random::deriveSeed(options.seed, "actions")) {
@@ -100,17 +166,7 @@ ModelBasedAgent::ModelBasedAgent(const AgentOptions& options,
         "features");
   }
   if (binsStates(options)) checkStatesPerDim(options, task.minFeatures.size());
-  ExplorerSettings settings;
-  settings.v = options.v;
-  settings.n = options.n;
-  settings.m = options.m;
-  settings.tau = options.tau;
-  settings.featMin = task.minFeatures;
-  settings.featMax = task.maxFeatures;
-  settings.seed = rl_common::Random::deriveSeed(options.seed, "regions");
-  const float rmax = task.maxReward > 0.0f ? task.maxReward : 1.0f;
-  settings.rmax = rmax / (1.0f - std::min(options.gamma, 0.999f));  // the original's qmax
-  const auto explorer = explorerRegistry().create(options.explore, settings);
+  const auto explorer = explorerRegistry().create(options.explore, explorerSettings());
   epsilonGreedy_ = explorer->epsilonGreedy;
   randomActions_ = explorer->randomActions;
   boltzmann_ = explorer->boltzmann;
@@ -125,51 +181,7 @@ ModelBasedAgent::ModelBasedAgent(const AgentOptions& options,
     }
   }
 
-  // The model.
-  std::unique_ptr<rl_common::MDPModel> model;
-  const auto reject = [&](const char* modelName) {
-    throw std::invalid_argument("ModelBasedAgent::ModelBasedAgent(): --explore " + options.explore +
-                                " is not available with --model " + modelName);
-  };
-  if (options.model == "tree") {
-    auto m = std::make_unique<ExplorationModel>(
-        modelConfig(options, task), rl_common::Random::deriveSeed(options.seed, "model"),
-        explorer->rewards, explorer->learners);
-    exploration_ = m.get();
-    model = std::move(m);
-  } else if (options.model == "tabular") {
-    const bool unknown = options.explore == "unknown";
-    if (!selectionOnly(options.explore) && !unknown) reject("tabular");
-    TabularModel::Config c;
-    c.numActions = task.numActions;
-    c.numFeatures = static_cast<int>(task.minFeatures.size());
-    c.m = options.m;
-    c.optimistic = unknown;
-    c.rmax = settings.rmax;
-    auto m = std::make_unique<TabularModel>(c);
-    tabular_ = m.get();
-    model = std::move(m);
-  } else if (options.model == "m5tree") {
-    if (!selectionOnly(options.explore)) reject("m5tree");
-    if (!isUct(options.planner) && !binsStates(options)) {
-      throw std::invalid_argument(
-          "ModelBasedAgent::ModelBasedAgent(): --model m5tree with --planner " + options.planner +
-          " needs --nstates > 0 (the planner's state grid)");
-    }
-    M5Model::Config c;
-    c.numActions = task.numActions;
-    c.featMin = task.minFeatures;
-    c.featMax = task.maxFeatures;
-    c.extraInputs = options.history * task.numActions;
-    c.relativeTransitions = options.reltrans;
-    c.episodic = task.episodic;
-    c.rewardRange = std::max(task.rewardRange(), 1e-6f);
-    model = std::make_unique<M5Model>(c);
-  } else {
-    throw std::invalid_argument("ModelBasedAgent::ModelBasedAgent(): unknown model '" +
-                                options.model + "'; valid: tabular, tree, m5tree");
-  }
-  modelPtr_ = model.get();
+  std::unique_ptr<rl_common::MDPModel> model = makeModel();
 
   // The planner.
   const std::uint64_t plannerSeed = rl_common::Random::deriveSeed(options.seed, "planner");
@@ -237,6 +249,10 @@ rl_common::State ModelBasedAgent::modelInput(const rl_common::State& s) {
 }
 
 void ModelBasedAgent::learn(const rl_common::Experience& e) {
+  if (recording_) {
+    recorded_.push_back({e, true});
+    ++recordedSteps_;
+  }
   if (realTime_) {
     realTime_->addExperience(e);
   } else {
@@ -256,6 +272,9 @@ void ModelBasedAgent::seedExperiences(const std::vector<rl_common::Experience>& 
     // Seeds carry no action history: "none" for every past action.
     e.s.resize(e.s.size() + static_cast<std::size_t>(options_.history * task_.numActions), 0.0f);
     inputs.push_back(std::move(e));
+  }
+  if (recording_) {
+    for (const auto& e : inputs) recorded_.push_back({e, false});
   }
   if (realTime_) {
     realTime_->addExperiences(inputs);
@@ -354,6 +373,41 @@ void ModelBasedAgent::setIntrinsicEnabled(bool enabled) {
   if (exploration_ != nullptr) exploration_->setIntrinsicEnabled(enabled);
   if (tabular_ != nullptr) tabular_->setOptimistic(enabled);
   if (!realTime_) planner_->setModel(model_->view());
+}
+
+void ModelBasedAgent::relabelRewards(const std::vector<float>& rewards) {
+  if (!recording_) {
+    throw std::logic_error(
+        "ModelBasedAgent::relabelRewards(): experiences were not recorded "
+        "(recordExperiences(true) before the first experience)");
+  }
+  if (rewards.size() != recordedSteps_) {
+    throw std::invalid_argument(
+        "ModelBasedAgent::relabelRewards(): " + std::to_string(rewards.size()) + " rewards for " +
+        std::to_string(recordedSteps_) + " recorded steps");
+  }
+  std::vector<rl_common::Experience> replay;
+  replay.reserve(recorded_.size());
+  std::size_t next = 0;
+  for (auto& r : recorded_) {
+    if (r.step) r.experience.reward = rewards[next++];
+    replay.push_back(r.experience);
+  }
+  std::unique_ptr<rl_common::Planner> planner =
+      realTime_ ? realTime_->releasePlanner() : std::move(planner_);
+  realTime_.reset();
+  model_.reset();
+  std::unique_ptr<rl_common::MDPModel> model = makeModel();
+  model->update(replay);
+  if (exploration_ != nullptr) exploration_->setIntrinsicEnabled(exploring_);
+  if (tabular_ != nullptr) tabular_->setOptimistic(exploring_);
+  if (isRealTimeUct(options_.planner) && options_.rollouts == 0) {
+    realTime_ = std::make_unique<RealTimePlanner>(std::move(model), std::move(planner));
+  } else {
+    planner->setModel(model->view());
+    model_ = std::move(model);
+    planner_ = std::move(planner);
+  }
 }
 
 std::shared_ptr<const rl_common::ModelView> ModelBasedAgent::currentView() const {

@@ -125,6 +125,12 @@ void RealTimePlanner::stop() {
   rethrowUnreportedLocked();
 }
 
+std::unique_ptr<rl_common::Planner> RealTimePlanner::releasePlanner() {
+  stop();
+  std::lock_guard<std::mutex> lock(plannerMutex_);
+  return std::move(planner_);
+}
+
 bool RealTimePlanner::running() const {
   std::lock_guard<std::mutex> lock(control_);
   return !stopping_;

@@ -1,5 +1,8 @@
 #include "rl_experiment/runner/agent_probe.h"
 
+#include <stdexcept>
+#include <string>
+
 #include "rl_agent/agent/model_based_agent.h"
 
 namespace rl_experiment {
@@ -17,6 +20,27 @@ bool setIntrinsicEnabled(rl_common::Agent& agent, bool enabled) {
     return true;
   }
   return false;
+}
+
+bool recordExperiences(rl_common::Agent& agent) {
+  if (auto* mb = dynamic_cast<rl_agent::ModelBasedAgent*>(&agent)) {
+    mb->recordExperiences(true);
+    return true;
+  }
+  return false;
+}
+
+long giveTaskRewards(rl_common::Agent& agent, const std::vector<float>& stepRewards) {
+  auto* mb = dynamic_cast<rl_agent::ModelBasedAgent*>(&agent);
+  if (mb == nullptr) return -1;
+  const std::size_t n = mb->recordedSteps();
+  if (n > stepRewards.size()) {
+    throw std::logic_error("giveTaskRewards(): the agent learned " + std::to_string(n) +
+                           " steps, more than the " + std::to_string(stepRewards.size()) +
+                           " steps taken");
+  }
+  mb->relabelRewards(std::vector<float>(stepRewards.begin(), stepRewards.begin() + long(n)));
+  return static_cast<long>(n);
 }
 
 std::shared_ptr<const rl_common::ModelView> learnedModelOf(const rl_common::Agent& agent) {

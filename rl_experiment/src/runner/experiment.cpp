@@ -51,6 +51,11 @@ void addExperimentOptions(rl_common::OptionParser& p, ExperimentConfig* c) {
           "phase 2 (after --explore-steps): steps with the external reward, intrinsic rewards "
           "off",
           atLeast(0));
+  p.choice("task-rewards", &c->taskRewards, {"given", "learned"},
+           "at the switch to --task-steps, model-based agents are given the task's reward "
+           "of their exploration steps and rebuild their model (given: the paper's "
+           "\"provided with a reward function\"), or learn it from the task steps only "
+           "(learned)");
   p.value("eval-every", &c->evalEvery,
           "measure the model's accuracy every this many steps (0: never)", atLeast(0));
   p.value("eval-samples", &c->evalSamples, "state-actions sampled per accuracy measurement",
@@ -90,8 +95,10 @@ void finishExperimentConfig(const rl_common::OptionParser& p, ExperimentConfig* 
     throw rl_common::OptionError(
         "option --format original needs --jobs 1 (the bare-number stream has no trial column)");
   }
-  if (p.given("task-steps") && !p.given("explore-steps") && c->exploreSteps == 0) {
-    // allowed: a task phase alone (intrinsic rewards off from the start)
+  // A task phase alone is allowed (intrinsic rewards off from the start).
+  if (p.given("task-rewards") && (c->exploreSteps == 0 || c->taskSteps == 0)) {
+    throw rl_common::OptionError(
+        "option --task-rewards needs both phases (--explore-steps and --task-steps > 0)");
   }
   if ((c->exploreSteps > 0 || c->taskSteps > 0) && (p.given("steps") || p.given("nepisodes"))) {
     throw rl_common::OptionError(
@@ -355,6 +362,7 @@ std::vector<std::pair<std::string, std::string>> Experiment::runTrial(
   limits.exploreSteps = config_.exploreSteps;
   limits.taskSteps = config_.taskSteps;
   limits.checkpointEvery = config_.evalEvery;
+  limits.giveTaskRewards = config_.taskRewards == "given";
   const TrialRunner runner(limits);
 
   TrialInfo info{trial, config_.label, ao.agent, eo.env, seeds.agent, seeds.env, seeds.eval};

@@ -51,6 +51,7 @@ TrialSummary TrialRunner::run(rl_common::Environment& env, rl_common::Agent& age
                               TrialObserver* observer) const {
   TrialObserver ignore;
   TrialObserver& obs = observer != nullptr ? *observer : ignore;
+  if (limits_.phased() && limits_.giveTaskRewards) recordExperiences(agent);
   agent.seedExperiences(env.seedExperiences());
   if (limits_.phased()) return runPhased(env, agent, obs);
 
@@ -124,8 +125,9 @@ TrialSummary TrialRunner::runPhased(rl_common::Environment& env, rl_common::Agen
   auto phaseAt = [&](long i) { return i < limits_.exploreSteps ? Phase::kExplore : Phase::kTask; };
 
   EpisodeRecord ep;
-  bool starting = true;  // the next action starts an episode
-  float seen = 0.0f;     // the reward the agent receives with its next call
+  bool starting = true;               // the next action starts an episode
+  float seen = 0.0f;                  // the reward the agent receives with its next call
+  std::vector<float> exploreRewards;  // the task's reward of every exploration step
   Phase current = phaseAt(0);
   setIntrinsicEnabled(agent, current == Phase::kExplore);
   obs.onPhase(current);
@@ -135,6 +137,11 @@ TrialSummary TrialRunner::runPhased(rl_common::Environment& env, rl_common::Agen
     const Phase phase = phaseAt(i);
     if (phase != current) {
       current = phase;
+      if (limits_.giveTaskRewards) {
+        const long given = giveTaskRewards(agent, exploreRewards);
+        // The last exploration step, not learned yet, comes with its true reward as well.
+        if (given >= 0 && !starting) seen = exploreRewards.back();
+      }
       setIntrinsicEnabled(agent, false);
       obs.onPhase(current);
     }
@@ -155,6 +162,7 @@ TrialSummary TrialRunner::runPhased(rl_common::Environment& env, rl_common::Agen
     obs.beforeStep(env, i, rec.action);
     rec.reward = env.apply(rec.action);
     rec.rewardSeen = phase == Phase::kExplore ? 0.0f : rec.reward;
+    if (phase == Phase::kExplore) exploreRewards.push_back(rec.reward);
     rec.terminal = env.terminal();
     seen = rec.rewardSeen;
     obs.onStep(rec);

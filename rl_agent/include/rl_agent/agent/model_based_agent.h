@@ -50,6 +50,7 @@
 #include "rl_agent/planner/real_time_planner.h"
 #include "rl_agent/planner/state_space_planner.h"
 #include "rl_agent/planner/uct_planner.h"
+#include "rl_agent/reward/explorer_registry.h"
 #include "rl_common/agent.h"
 #include "rl_common/environment.h"
 #include "rl_common/random.h"
@@ -82,6 +83,20 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   /// the paper's task phase (§5.1: "the agents act greedily with respect to their previously
   /// learned transition models").
   void setIntrinsicEnabled(bool enabled);
+  /// Keeps every experience (seeds and steps) from now on, for relabelRewards(). Off by
+  /// default: the log grows with every step.
+  void recordExperiences(bool on) { recording_ = on; }
+  /// Gives the agent a task's reward function after a reward-free phase, as the paper's
+  /// explore-then-task protocol ("provided with a reward function for a task", §5.1):
+  /// `rewards[i]` replaces the reward of the i-th recorded step experience (seeds keep
+  /// theirs), and the model is rebuilt from the recorded experiences, with the same seeds, so it
+  /// equals the model the agent would have learned had it seen those rewards all along. The
+  /// planner keeps its values and re-queries the new model (in real time: the workers are
+  /// restarted on it). Throws std::logic_error unless recording was on from the start, and
+  /// std::invalid_argument unless there is one reward per recorded step experience.
+  void relabelRewards(const std::vector<float>& rewards);
+  /// Step experiences recorded so far (see recordExperiences()).
+  std::size_t recordedSteps() const { return recordedSteps_; }
   /// The tree model's current view (for evaluation); thread-safe. Null for tabular and m5tree
   /// models: use learnedModelView().
   std::shared_ptr<const ExplorationModel::View> modelView() const;
@@ -98,6 +113,9 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   bool realTime() const { return realTime_ != nullptr; }
 
  private:
+  ExplorerSettings explorerSettings() const;
+  /// A new, empty model of the configured type (sets exploration_, tabular_ and modelPtr_).
+  std::unique_ptr<rl_common::MDPModel> makeModel();
   int chooseAction(const rl_common::State& s);
   void learn(const rl_common::Experience& e);
   rl_common::State binned(const rl_common::State& s) const;
@@ -124,6 +142,13 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   UctPlanner* uct_ = nullptr;                ///< the planner, when it is UCT (sync mode)
   StateSpacePlanner* dp_ = nullptr;          ///< the planner, when it is vi/pi/sweeping
   std::unique_ptr<RealTimePlanner> realTime_;
+  struct Recorded {
+    rl_common::Experience experience;  ///< as the model learned it (binned, with history)
+    bool step = false;                 ///< false for a seed
+  };
+  bool recording_ = false;
+  std::vector<Recorded> recorded_;
+  std::size_t recordedSteps_ = 0;
   std::vector<int> history_;
   rl_common::State lastInput_;
   int lastAction_ = -1;

@@ -81,6 +81,9 @@ class RealTimePlanner {
   void stop();
   /// False once stop() was called or a worker failed.
   bool running() const;
+  /// stop(), then hands the planner back (e.g. to plan on a rebuilt model); the model is
+  /// dropped. Afterwards act() and withPlanner() must not be called.
+  std::unique_ptr<rl_common::Planner> releasePlanner();
 
   /// Calls f(planner) with exclusive access to the planner, e.g. to set an action history or
   /// read values; the planning thread pauses after its current slice. Returns f's result.

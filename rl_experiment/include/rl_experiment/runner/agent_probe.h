@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "rl_agent/agent/reward_breakdown_source.h"
 #include "rl_common/agent.h"
@@ -21,6 +22,15 @@ std::optional<rl_agent::RewardBreakdown> rewardBreakdownOf(const rl_common::Agen
 
 /// Switches the agent's intrinsic rewards on or off. Returns false if the agent has none.
 bool setIntrinsicEnabled(rl_common::Agent& agent, bool enabled);
+
+/// Makes a model-based agent keep its experiences (for giveTaskRewards). Returns false for
+/// other agents.
+bool recordExperiences(rl_common::Agent& agent);
+
+/// Gives a model-based agent the task's reward of each step it has learned from so far: the
+/// first agent.recordedSteps() entries of `stepRewards` (rl_agent::ModelBasedAgent::
+/// relabelRewards). Returns the number of rewards used, or -1 if the agent learns no model.
+long giveTaskRewards(rl_common::Agent& agent, const std::vector<float>& stepRewards);
 
 /// The agent's learned model as it is now (predicted next-state distributions), or null if the
 /// agent learns no model.

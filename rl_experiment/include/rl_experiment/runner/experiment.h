@@ -45,15 +45,16 @@ struct ExperimentConfig {
   int maxsteps = 1000;             ///< --maxsteps
   int exploreSteps = 0;            ///< --explore-steps
   int taskSteps = 0;               ///< --task-steps
-  int evalEvery = 25;              ///< --eval-every (0: no accuracy evaluation)
-  int evalSamples = 5000;          ///< --eval-samples
-  std::string out;                 ///< --out folder ("" : no files)
-  bool force = false;              ///< --force
-  bool resume = false;             ///< --resume
-  int jobs = 1;                    ///< --jobs
-  std::string format = "csv";      ///< --format csv|original
-  std::string label;               ///< --label (default: the agent's name)
-  std::string progress = "auto";   ///< --progress auto|on|off
+  std::string taskRewards = "given";  ///< --task-rewards: given or learned
+  int evalEvery = 25;                 ///< --eval-every (0: no accuracy evaluation)
+  int evalSamples = 5000;             ///< --eval-samples
+  std::string out;                    ///< --out folder ("" : no files)
+  bool force = false;                 ///< --force
+  bool resume = false;                ///< --resume
+  int jobs = 1;                       ///< --jobs
+  std::string format = "csv";         ///< --format csv|original
+  std::string label;                  ///< --label (default: the agent's name)
+  std::string progress = "auto";      ///< --progress auto|on|off
 };
 
 /// Declares every runner option (agent, environment and the runner's own) on `parser`.

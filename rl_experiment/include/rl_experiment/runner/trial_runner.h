@@ -14,6 +14,12 @@
  * phase (the agent receives the external reward; intrinsic rewards switched off, so it acts
  * greedily on its learned model). The steps form one stream: the agent is not restarted between
  * the phases. Episodic tasks restart episodes as above until the phase budget is spent.
+ * With `giveTaskRewards` (the default) a model-based agent is, at the switch, "provided with a
+ * reward function for a task" (the paper, §5.1): it is given the task's reward of every
+ * exploration step it learned from, and rebuilds its model as if it had seen them all along
+ * (rl_agent::ModelBasedAgent::relabelRewards). Without it, or for model-free agents, the task's
+ * rewards are learned from the task steps only (what the original's code allows: a reward-free
+ * environment, then the task's).
  *
  * Every step and episode is reported to an observer as it happens (so logs can be written line
  * by line), and every `checkpointEvery` steps the observer may inspect the agent (model
@@ -36,6 +42,7 @@ struct TrialLimits {
   int exploreSteps = 0;     ///< phases: steps with the external reward hidden
   int taskSteps = 0;        ///< phases: steps with external reward, intrinsic rewards off
   int checkpointEvery = 0;  ///< call TrialObserver::onCheckpoint every this many steps (0: never)
+  bool giveTaskRewards = true;  ///< phases: relabel the exploration steps' rewards at the switch
 
   bool phased() const { return exploreSteps > 0 || taskSteps > 0; }
 };
