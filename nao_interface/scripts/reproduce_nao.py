@@ -3,6 +3,7 @@
 
 Usage: reproduce_nao.py [--quick] [--out DIR] [--trials N] [--jobs K] [--seed S]
                         [--rollouts R] [--explore-steps E] [--task-steps T] [--lambda L]
+                        [--nstates G|none] [--task-rewards given|learned]
 
 For each exploration strategy (TEXPLORE-VANIR with v = 3, n = 10; random exploration) and each
 task (pink, button, mic), the standalone `experiment` runner runs --trials trials on the
@@ -11,12 +12,26 @@ in-process `naoarm` environment: E exploration steps with the task's reward hidd
 seeds, so their exploration phases are the same run seen through three reward functions: the
 button runs give Fig. 10 (fraction of trials that pressed the foot button by each exploration
 step), the pink runs Fig. 11 (highest pink pixel count seen by each step); the task phases give
-Figs. 12-14 (average task reward per step). Writes DIR/fig10_button_explore.png ... fig14,
-DIR/results.md (a table) and the runs under DIR/runs/.
---quick: 2 trials, 150 exploration and 60 task steps, 30 rollouts (a few minutes on 2 cores).
+Figs. 12-14 (average task reward per step). The paper's first question, how much of the state
+space the agent explored, is also measured directly: fig_cells_explore.png counts the distinct
+shoulder targets (cells of the 8-degree grid the actions move on) commanded by each step.
+Writes DIR/fig10_button_explore.png ... fig14, DIR/results.md (a table) and the runs under
+DIR/runs/.
+--quick: 6 trials, 400 exploration and 100 task steps, 100 rollouts (a few minutes on 2 cores);
+the full run is the paper's 13 trials, 400 and 200 steps.
+
+Both strategies see the arm's state binned per feature (the agents' --nstates, default
+NAO_STATES: 8-degree joint cells, 20 mm hand cells, ~1000 pink pixels, the bumper, 200 units of
+microphone energy), and UCT mixes Monte-Carlo returns with lambda 1 (--lambda; as the LightWorld
+reproduction). On the raw continuous, noisy states every relative change is a class of its own,
+so the trees disagree everywhere (the variance bonus is flat), UCT meets each imagined state once,
+and TEXPLORE-VANIR explores no more than random actions do; --nstates none --lambda 0.1 runs that
+setting (the agents' defaults).
 
 In the task phase every strategy acts greedily on the model it learned (the runner switches
-exploration off, random action choice included), as in the paper.
+exploration off, random action choice included), as in the paper, after being "provided with a
+reward function" (--task-rewards given: it is given the task's reward of its exploration steps;
+learned: it learns the reward from the task steps only).
 """
 import argparse
 import csv
@@ -31,6 +46,15 @@ STRATEGIES = {
     "random": ["--agent", "texplore", "--explore", "random"],
 }
 TASKS = ["pink", "button", "mic"]
+# Bins per feature over the naoarm ranges (nao_arm_task.cpp): RShoulderPitch 242 deg / 30,
+# RShoulderRoll 97 deg / 12 (both about the 8-degree action step), hand x, y, z 500 mm / 25,
+# pink 153600 / 154, bumper 1 / 1 (0 or 1), microphone 4000 / 20.
+NAO_STATES = "30,12,25,25,25,154,1,20"
+# The shoulder joints' limits (urdf/nao_upper_body.urdf) and start posture
+# (NaoArmSimConfig), in degrees: the actions move the targets 8 degrees, clamped to the limits.
+PITCH_LIMITS = (-119.5, 119.5)
+ROLL_LIMITS = (-76.0, 18.0)
+START = (-72.0, -12.0)
 
 
 def find_experiment():
@@ -62,19 +86,23 @@ def run_all(args, exe):
                    "--rollouts", str(args.rollouts), "--trials", str(args.trials),
                    "--jobs", str(args.jobs), "--seed", str(args.seed), "--eval-every", "0",
                    "--label", name, "--out", out, "--force", "--progress", "off"]
-            if args.lam is not None:
-                cmd += ["--lambda", repr(args.lam)]
+            cmd += ["--lambda", repr(args.lam), "--task-rewards", args.task_rewards]
+            if args.nstates != "none":
+                cmd += ["--nstates", args.nstates]
             print(f"[reproduce nao] {name} / {task}: {' '.join(cmd)}", flush=True)
             subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
 
 
-def read_steps(args, name, task):
-    """{trial: [(phase, reward), ...]} in step order."""
+def read_steps(args, name, task, with_actions=False):
+    """{trial: [(phase, reward[, action]), ...]} in step order."""
     trials = {}
     for path in sorted(glob.glob(os.path.join(args.out, "runs", f"{name}-{task}", "steps-*.csv"))):
         with open(path) as f:
             for row in csv.DictReader(f):
-                trials.setdefault(int(row["trial"]), []).append((row["phase"], float(row["reward"])))
+                step = (row["phase"], float(row["reward"]))
+                if with_actions:
+                    step += (int(row["action"]),)
+                trials.setdefault(int(row["trial"]), []).append(step)
     if not trials:
         sys.exit(f"reproduce nao: no step logs for {name} / {task}")
     return [trials[t] for t in sorted(trials)]
@@ -82,6 +110,33 @@ def read_steps(args, name, task):
 
 def mean(xs):
     return sum(xs) / len(xs) if xs else float("nan")
+
+
+def cells_curve_step(pitch, roll, action):
+    """The shoulder targets after `action`, as applyNaoArmAction moves and clamps them."""
+    if action in (0, 1):
+        pitch = min(max(pitch + (8.0 if action == 0 else -8.0), PITCH_LIMITS[0]), PITCH_LIMITS[1])
+    elif action in (2, 3):
+        roll = min(max(roll + (8.0 if action == 2 else -8.0), ROLL_LIMITS[0]), ROLL_LIMITS[1])
+    return pitch, roll
+
+
+def cell(pitch, roll):
+    """The 8-degree cell of a shoulder target, counted in steps from the start posture (a target
+    clamped at a limit and one step back from it fall in neighbouring cells)."""
+    return round((pitch - START[0]) / 8.0), round((roll - START[1]) / 8.0)
+
+
+def cells_curve(actions):
+    """Distinct shoulder cells commanded by each step."""
+    pitch, roll = START
+    seen = {cell(pitch, roll)}
+    curve = []
+    for a in actions:
+        pitch, roll = cells_curve_step(pitch, roll, a)
+        seen.add(cell(pitch, roll))
+        curve.append(len(seen))
+    return curve
 
 
 def analyse(args):
@@ -111,6 +166,12 @@ def analyse(args):
             curves.append(curve)
         n = min(len(c) for c in curves)
         r["fig11"] = [mean([c[i] for c in curves]) for i in range(n)]
+        # The explored part of the arm's space: distinct shoulder cells commanded by each step.
+        cells = [cells_curve([a for ph, _, a in steps if ph == "explore"])
+                 for steps in read_steps(args, name, "button", with_actions=True)]
+        n = min(len(c) for c in cells)
+        r["cells"] = [mean([c[i] for c in cells]) for i in range(n)]
+        r["cells-final"] = [c[-1] for c in cells if c]
         # Figs. 12-14: task reward per task step, averaged over trials.
         for task in TASKS:
             runs = read_steps(args, name, task)
@@ -137,6 +198,8 @@ def plot(args, res):
          "Fig. 10: foot button pressed during exploration"),
         ("fig11_max_pink_explore", "fig11", "exploration step", "max pink pixels seen (mean)",
          "Fig. 11: max pink pixels during exploration"),
+        ("fig_cells_explore", "cells", "exploration step", "distinct shoulder cells commanded (mean)",
+         "Explored arm configurations"),
         ("fig12_pink_task", "task-pink", "task step", "reward (pink pixels, mean)",
          "Fig. 12: pink task after exploration"),
         ("fig13_button_task", "task-button", "task step", "reward (mean)",
@@ -161,21 +224,31 @@ def plot(args, res):
     return written
 
 
+def reachable_cells():
+    """The number of shoulder cells within the joint limits."""
+    lo, hi = cell(PITCH_LIMITS[0], ROLL_LIMITS[0]), cell(PITCH_LIMITS[1], ROLL_LIMITS[1])
+    return (hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1)
+
+
 def table(args, res):
     lines = [
         f"# Nao arm experiments (TEXPLORE-VANIR paper section 5.2), simulated Nao",
         "",
         f"{args.trials} trials per strategy and task, {args.explore_steps} exploration steps then "
         f"{args.task_steps} task steps, {args.rollouts} UCT rollouts per step, UCT lambda "
-        f"{'0.1 (default)' if args.lam is None else args.lam}, seed {args.seed}.",
+        f"{args.lam}, states binned by --nstates {args.nstates}, task rewards {args.task_rewards} "
+        f"at the switch, seed {args.seed}. Shoulder cells: distinct 8-degree shoulder targets "
+        f"commanded while exploring, of {reachable_cells()} (mean and range over trials).",
         "",
-        "| strategy | trials that pressed the button while exploring | max pink seen while exploring (mean of trials / best) "
+        "| strategy | shoulder cells visited while exploring | trials that pressed the button while exploring | max pink seen while exploring (mean of trials / best) "
         "| pink task: mean reward per step | button task: mean reward per step | mic task: mean reward per step | mic task: trials with a cymbal hit (> 800) |",
-        "|---|---|---|---|---|---|---|",
+        "|---|---|---|---|---|---|---|---|",
     ]
     for name, r in res.items():
+        c = r["cells-final"]
         lines.append(
-            f"| {name} | {r['pressed']}/{r['trials']} | {r['final-max-pink']:.0f} / {r['max-pink']:.0f} "
+            f"| {name} | {mean(c):.1f} ({min(c)}-{max(c)}) | {r['pressed']}/{r['trials']} "
+            f"| {r['final-max-pink']:.0f} / {r['max-pink']:.0f} "
             f"| {r['task-pink-mean']:.1f} | {r['task-button-mean']:.1f} | {r['task-mic-mean']:.1f} "
             f"| {r['task-mic-trials-hit']}/{r['trials']} |")
     lines += ["", "Paper (13 trials, real Nao): button pressed in 7/13 (TEXPLORE-VANIR) vs 0/13 "
@@ -190,7 +263,7 @@ def table(args, res):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--quick", action="store_true", help="2 trials, 150 + 60 steps, 30 rollouts")
+    p.add_argument("--quick", action="store_true", help="6 trials, 400 + 100 steps, 100 rollouts")
     p.add_argument("--out", default=None, help="output folder (default: results/nao[-quick])")
     p.add_argument("--trials", type=int, default=None)
     p.add_argument("--jobs", type=int, default=2)
@@ -198,10 +271,16 @@ def main():
     p.add_argument("--rollouts", type=int, default=None)
     p.add_argument("--explore-steps", type=int, default=None)
     p.add_argument("--task-steps", type=int, default=None)
-    p.add_argument("--lambda", dest="lam", type=float, default=None,
-                   help="UCT(lambda) of both strategies (default: the agent's own, 0.1)")
+    p.add_argument("--lambda", dest="lam", type=float, default=1.0,
+                   help="UCT(lambda) of both strategies (default 1; the agents' own is 0.1)")
+    p.add_argument("--task-rewards", default="given", choices=["given", "learned"],
+                   help="at the task switch, the agent is given the task's reward of its "
+                        "exploration steps (given, default) or learns it from the task steps only")
+    p.add_argument("--nstates", default=NAO_STATES,
+                   help=f"the agents' bins per feature (default {NAO_STATES}); 'none' learns "
+                        "and plans on the continuous states")
     args = p.parse_args()
-    quick = dict(trials=2, explore_steps=150, task_steps=60, rollouts=30)
+    quick = dict(trials=6, explore_steps=400, task_steps=100, rollouts=100)
     full = dict(trials=13, explore_steps=400, task_steps=200, rollouts=100)
     for k, v in (quick if args.quick else full).items():
         if getattr(args, k) is None:

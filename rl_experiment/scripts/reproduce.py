@@ -2,7 +2,8 @@
 """The TEXPLORE-VANIR paper's LightWorld experiments (section 5.1, Figs. 4-8), in one command.
 
 Usage: reproduce.py lightworld [--quick] [--out DIR] [--trials N] [--jobs K] [--seed S]
-                               [--rollouts R] [--experiment NAME ...] [--list]
+                               [--rollouts R] [--experiment NAME ...] [--lambda L]
+                               [--task-rewards given|learned] [--list]
 
 Experiments (each agent runs --trials trials through the standalone `experiment` runner):
   explore-task  1000 exploration steps without external reward, then 3000 task steps acting
@@ -15,7 +16,10 @@ on TEXPLORE's forest (random, competence, prederror, R-MAX-style, Boltzmann), th
 agent, and every other agent the registry offers when this runs (`experiment --list-agents`).
 Every UCT agent plans with --lambda (1 unless given): with the agents' default 0.1, the original's,
 they fixate on self-loops in LightWorld and TEXPLORE-VANIR explores less than random actions (the
-README's "Known limits"); `--lambda 0.1` runs the original's setting.
+README's "Known limits"); `--lambda 0.1` runs the original's setting. At the switch to the task
+the model-based agents are given the task's reward of their exploration steps (the runner's
+--task-rewards given, the paper's "provided with a reward function"); --task-rewards learned
+makes them learn it from the task steps only.
 --quick uses 4 trials and shorter runs (8 minutes on 2 cores). The full run (30 trials, the
 paper's lengths) is estimated at 3-5 hours on 2 cores (not yet measured). Writes run folders,
 figures (PNG, PDF) per experiment and DIR/results.md with the final numbers and 95% intervals.
@@ -143,6 +147,10 @@ def main(argv=None):
                     help="UCT(lambda) of every UCT agent (default 1, Monte-Carlo backups; the "
                          "agents' own default, the original's 0.1, makes them fixate on "
                          "self-loops in LightWorld: see the README's known limits)")
+    ap.add_argument("--task-rewards", default="given", choices=["given", "learned"],
+                    help="explore-task: model-based agents are given the task's reward of their "
+                         "exploration steps at the switch (given, default) or learn it from the "
+                         "task steps only (learned)")
     ap.add_argument("--list", action="store_true",
                     help="print each experiment's agents and their options, then exit")
     args = ap.parse_args(argv)
@@ -183,7 +191,8 @@ def main(argv=None):
               "--jobs", str(args.jobs), "--eval-samples", str(samples), "--progress", "off"]
     experiments = [
         ("explore-task", "Figs. 4-6: %d exploration steps, then %d task steps" % (explore, task),
-         agents, ["--explore-steps", str(explore), "--task-steps", str(task)]),
+         agents, ["--explore-steps", str(explore), "--task-steps", str(task),
+                  "--task-rewards", args.task_rewards]),
         ("combined", "Fig. 7: %d steps, intrinsic and external rewards combined" % combined,
          agents, ["--steps", str(combined)]),
         ("ablation", "Fig. 8: TEXPLORE-VANIR v/n ablation, %d steps combined" % ablation,
@@ -234,9 +243,10 @@ def main(argv=None):
         log("  figures in %s" % figs)
     elapsed = time.time() - start
     md = ["# LightWorld reproduction%s" % (" (quick)" if args.quick else ""), "",
-          "%d trials per agent, %d UCT rollouts per step, UCT lambda %s, seed %d; run time %.1f "
-          "min on %d jobs." % (trials, rollouts, repr(args.lam), args.seed, elapsed / 60,
-                               args.jobs), "",
+          "%d trials per agent, %d UCT rollouts per step, UCT lambda %s, task rewards %s at the "
+          "switch, seed %d; run time %.1f min on %d jobs." %
+          (trials, rollouts, repr(args.lam), args.task_rewards, args.seed, elapsed / 60,
+           args.jobs), "",
           "For reference, the paper's optimal policy earns %.1f over the 3000 task steps." %
           PAPER_OPTIMAL_TASK_REWARD, ""] + tables
     tmp = os.path.join(out, ".results.md.tmp")
