@@ -110,7 +110,7 @@ cmd_test() {
 }
 
 # The multi-threaded tests again, built with ThreadSanitizer: any data race fails them.
-TSAN_TESTS=(rl_agent_test_real_time_planner rl_agent_test_model_based_agent)
+TSAN_TESTS=(rl_agent_test_real_time_planner rl_agent_test_model_based_agent rl_agent_test_relabel_rewards)
 run_tsan_tests() {
   local results=$1 tsan=$BUILD_ROOT/tsan
   mkdir -p "$results" "$tsan/devel/lib/python3/dist-packages"
