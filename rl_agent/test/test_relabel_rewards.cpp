@@ -128,4 +128,6 @@ TEST(RelabelRewards, NeedsRecordingAndOneRewardPerStep) {
   Episodes recorded = runSteps(o, 10, false, true);
   auto& mb = dynamic_cast<ModelBasedAgent&>(*recorded.agent);
   EXPECT_THROW(mb.relabelRewards(std::vector<float>(3, 1.0f)), std::invalid_argument);
+  // Recording that starts late would rebuild a model without the earlier experiences.
+  EXPECT_THROW(plain.recordExperiences(true), std::logic_error);
 }

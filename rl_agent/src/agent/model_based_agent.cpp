@@ -249,6 +249,7 @@ rl_common::State ModelBasedAgent::modelInput(const rl_common::State& s) {
 }
 
 void ModelBasedAgent::learn(const rl_common::Experience& e) {
+  ++learned_;
   if (recording_) {
     recorded_.push_back({e, true});
     ++recordedSteps_;
@@ -273,6 +274,7 @@ void ModelBasedAgent::seedExperiences(const std::vector<rl_common::Experience>& 
     e.s.resize(e.s.size() + static_cast<std::size_t>(options_.history * task_.numActions), 0.0f);
     inputs.push_back(std::move(e));
   }
+  learned_ += inputs.size();
   if (recording_) {
     for (const auto& e : inputs) recorded_.push_back({e, false});
   }
@@ -373,6 +375,14 @@ void ModelBasedAgent::setIntrinsicEnabled(bool enabled) {
   if (exploration_ != nullptr) exploration_->setIntrinsicEnabled(enabled);
   if (tabular_ != nullptr) tabular_->setOptimistic(enabled);
   if (!realTime_) planner_->setModel(model_->view());
+}
+
+void ModelBasedAgent::recordExperiences(bool on) {
+  if (on && !recording_ && learned_ > 0) {
+    throw std::logic_error("ModelBasedAgent::recordExperiences(): " + std::to_string(learned_) +
+                           " experiences were learned before recording started");
+  }
+  recording_ = on;
 }
 
 void ModelBasedAgent::relabelRewards(const std::vector<float>& rewards) {

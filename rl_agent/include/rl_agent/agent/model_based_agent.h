@@ -84,8 +84,9 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   /// learned transition models").
   void setIntrinsicEnabled(bool enabled);
   /// Keeps every experience (seeds and steps) from now on, for relabelRewards(). Off by
-  /// default: the log grows with every step.
-  void recordExperiences(bool on) { recording_ = on; }
+  /// default: the log grows with every step. Throws std::logic_error if the agent has learned
+  /// from experiences already (a rebuilt model would lose them).
+  void recordExperiences(bool on);
   /// Gives the agent a task's reward function after a reward-free phase, as the paper's
   /// explore-then-task protocol ("provided with a reward function for a task", §5.1):
   /// `rewards[i]` replaces the reward of the i-th recorded step experience (seeds keep
@@ -147,6 +148,7 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
     bool step = false;                 ///< false for a seed
   };
   bool recording_ = false;
+  std::size_t learned_ = 0;  ///< experiences (seeds and steps) handed to the model
   std::vector<Recorded> recorded_;
   std::size_t recordedSteps_ = 0;
   std::vector<int> history_;
