@@ -8,6 +8,7 @@
 #include <chrono>
 #include <thread>
 
+#include "corridor.h"
 #include "rl_agent/agent/agent_options.h"
 
 using rl_agent::AgentOptions;
@@ -16,31 +17,12 @@ using rl_common::State;
 
 namespace {
 
-rl_common::EnvironmentDescription corridorTask() {
-  rl_common::EnvironmentDescription d;
-  d.numActions = 3;
-  d.minFeatures = {0.0f};
-  d.maxFeatures = {7.0f};
-  d.minReward = 0.0f;
-  d.maxReward = 1.0f;
-  d.episodic = true;
-  d.stochastic = false;
-  return d;
-}
+using test_corridor::corridorTask;
+using test_corridor::step;
 
 AgentOptions texplore(const std::vector<std::string>& extra) {
-  AgentOptions o;
-  rl_common::OptionParser p("test", "");
-  rl_agent::addAgentOptions(p, &o);
-  std::vector<std::string> args{"--agent", "texplore"};
-  args.insert(args.end(), extra.begin(), extra.end());
-  p.parse(args);
-  rl_agent::applyAgentDefaults(p, &o);
-  rl_agent::checkAgentOptions(p, o);
-  return o;
+  return test_corridor::parseOptions("texplore", extra);
 }
-
-int step(int x, int a) { return std::max(0, std::min(7, x + (a == 1 ? 1 : a == 0 ? -1 : 0))); }
 
 // Runs `episodes` episodes of at most 60 steps; returns the steps of each.
 std::vector<int> run(ModelBasedAgent& agent, int episodes, std::vector<int>* actions = nullptr) {

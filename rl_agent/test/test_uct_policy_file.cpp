@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <set>
 
+#include "corridor.h"
 #include "rl_agent/agent/agent_options.h"
 #include "rl_agent/agent/agent_registry.h"
 #include "rl_agent/agent/model_based_agent.h"
@@ -30,32 +31,14 @@ std::string tempFile(const char* name) {
   return testing::TempDir() + "rl_agent_uct_" + name + "_" + std::to_string(::getpid()) + ".pol";
 }
 
-rl_common::EnvironmentDescription corridorTask() {
-  rl_common::EnvironmentDescription d;
-  d.numActions = 3;
-  d.minFeatures = {0.0f};
-  d.maxFeatures = {7.0f};
-  d.minReward = 0.0f;
-  d.maxReward = 1.0f;
-  d.episodic = true;
-  d.stochastic = false;
-  return d;
-}
+using test_corridor::corridorTask;
+using test_corridor::step;
 
 AgentOptions options(const std::string& agent, const std::vector<std::string>& extra) {
-  AgentOptions o;
-  rl_common::OptionParser p("test", "");
-  rl_agent::addAgentOptions(p, &o);
-  std::vector<std::string> args{"--agent", agent};
-  args.insert(args.end(), extra.begin(), extra.end());
-  p.parse(args);
-  rl_agent::applyAgentDefaults(p, &o);
-  rl_agent::checkAgentOptions(p, o);
+  AgentOptions o = test_corridor::parseOptions(agent, extra);
   o.seed = 3;
   return o;
 }
-
-int step(int x, int a) { return std::max(0, std::min(7, x + (a == 1 ? 1 : a == 0 ? -1 : 0))); }
 
 /// Runs `episodes` episodes of at most `maxSteps` steps from cell 0; returns their lengths.
 std::vector<int> run(rl_common::Agent& agent, int episodes, int maxSteps = 60) {
