@@ -18,31 +18,21 @@ DiscretizationAgent::DiscretizationAgent(std::unique_ptr<rl_common::Agent> inner
         "DiscretizationAgent::DiscretizationAgent(): need one bin count, or one per feature, "
         "and matching feature ranges");
   }
-  factor_.assign(d, 0.0f);
-  for (std::size_t j = 0; j < d; ++j) {
-    const int n = statesPerDim.size() == 1 ? statesPerDim[0] : statesPerDim[j];
+  for (int n : statesPerDim) {
     if (n < 0) {
       throw std::invalid_argument("DiscretizationAgent::DiscretizationAgent(): negative --nstates");
     }
-    if (n > 0) factor_[j] = (featMax[j] - featMin[j]) / static_cast<float>(n);
   }
+  grid_ = StateGrid(statesPerDim, featMin, featMax);
 }
 
 rl_common::State DiscretizationAgent::discretize(const rl_common::State& s) const {
-  if (s.size() != factor_.size()) {
+  if (s.size() != grid_.size()) {
     throw std::invalid_argument("DiscretizationAgent::discretize(): state has " +
                                 std::to_string(s.size()) + " features, expected " +
-                                std::to_string(factor_.size()));
+                                std::to_string(grid_.size()));
   }
-  rl_common::State out(s);
-  for (std::size_t j = 0; j < s.size(); ++j) {
-    const float f = factor_[j];
-    if (f <= 0.0f) continue;
-    const int bin = s[j] > 0.0f ? static_cast<int>((s[j] + f / 2.0f) / f)
-                                : static_cast<int>((s[j] - f / 2.0f) / f);
-    out[j] = f * static_cast<float>(bin);
-  }
-  return out;
+  return grid_.apply(s);
 }
 
 int DiscretizationAgent::firstAction(const rl_common::State& s) {

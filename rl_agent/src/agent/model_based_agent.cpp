@@ -173,12 +173,7 @@ ModelBasedAgent::ModelBasedAgent(const AgentOptions& options,
   tau_ = explorer->tau;
 
   if (binsStates(options) && options.model != "m5tree") {
-    binFactor_.resize(task.minFeatures.size());
-    for (std::size_t j = 0; j < binFactor_.size(); ++j) {
-      const int n = options.nstates.size() == 1 ? options.nstates[0] : options.nstates[j];
-      binFactor_[j] =
-          n > 0 ? (task.maxFeatures[j] - task.minFeatures[j]) / static_cast<float>(n) : 0.0f;
-    }
+    grid_ = StateGrid(options.nstates, task.minFeatures, task.maxFeatures);
   }
 
   std::unique_ptr<rl_common::MDPModel> model = makeModel();
@@ -222,18 +217,7 @@ ModelBasedAgent::~ModelBasedAgent() {
   }
 }
 
-rl_common::State ModelBasedAgent::binned(const rl_common::State& s) const {
-  if (binFactor_.empty()) return s;
-  rl_common::State out(s);
-  for (std::size_t j = 0; j < binFactor_.size() && j < s.size(); ++j) {
-    const float f = binFactor_[j];
-    if (f <= 0.0f) continue;
-    const int bin = s[j] > 0.0f ? static_cast<int>((s[j] + f / 2.0f) / f)
-                                : static_cast<int>((s[j] - f / 2.0f) / f);
-    out[j] = f * static_cast<float>(bin);
-  }
-  return out;
-}
+rl_common::State ModelBasedAgent::binned(const rl_common::State& s) const { return grid_.apply(s); }
 
 rl_common::State ModelBasedAgent::modelInput(const rl_common::State& s) {
   if (options_.history == 0) return s;

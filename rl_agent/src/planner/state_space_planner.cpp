@@ -21,36 +21,17 @@ StateSpacePlanner::StateSpacePlanner(const Config& config, std::uint64_t seed)
         "maxStates >= 1 and maxIterations >= 1");
   }
   const auto& bins = config.statesPerDim;
-  if (!bins.empty()) {
-    if (config.featMin.empty() || config.featMin.size() != config.featMax.size() ||
-        (bins.size() != 1 && bins.size() != config.featMin.size())) {
-      throw std::invalid_argument(
-          "StateSpacePlanner::StateSpacePlanner(): statesPerDim needs the feature ranges and "
-          "one entry, or one per feature");
-    }
-    for (std::size_t j = 0; j < config.featMin.size(); ++j) {
-      const int n = bins.size() == 1 ? bins[0] : bins[j];
-      if (n < 0) {
-        throw std::invalid_argument(
-            "StateSpacePlanner::StateSpacePlanner(): statesPerDim entries must be >= 0");
-      }
-      binFactor_.push_back(n > 0 ? (config.featMax[j] - config.featMin[j]) / static_cast<float>(n)
-                                 : 0.0f);
-    }
+  if (!bins.empty() && (config.featMin.empty() || config.featMin.size() != config.featMax.size() ||
+                        (bins.size() != 1 && bins.size() != config.featMin.size()))) {
+    throw std::invalid_argument(
+        "StateSpacePlanner::StateSpacePlanner(): statesPerDim needs the feature ranges and "
+        "one entry, or one per feature");
   }
+  grid_ = StateGrid(bins, config.featMin, config.featMax);
 }
 
 rl_common::State StateSpacePlanner::binned(const rl_common::State& s) const {
-  if (binFactor_.empty()) return s;
-  rl_common::State out(s);
-  for (std::size_t j = 0; j < binFactor_.size() && j < s.size(); ++j) {
-    const float f = binFactor_[j];
-    if (f <= 0.0f) continue;
-    const int bin = s[j] > 0.0f ? static_cast<int>((s[j] + f / 2.0f) / f)
-                                : static_cast<int>((s[j] - f / 2.0f) / f);
-    out[j] = f * static_cast<float>(bin);
-  }
-  return out;
+  return grid_.apply(s);
 }
 
 void StateSpacePlanner::setModel(std::shared_ptr<const rl_common::ModelView> model) {

@@ -70,8 +70,8 @@ UctPlanner::UctPlanner(const Config& config, std::uint64_t seed) : config_(confi
     if (config_.statesPerDim.size() == 1) {
       config_.statesPerDim.assign(c.featMin.size(), config_.statesPerDim.front());
     }
-    discretising_ = std::any_of(config_.statesPerDim.begin(), config_.statesPerDim.end(),
-                                [](int n) { return n > 0; });
+    grid_ = StateGrid(config_.statesPerDim, c.featMin, c.featMax);
+    discretising_ = grid_.bins();
   }
   if (c.history < 0) {
     throw badConfig("history must be >= 0 (got " + std::to_string(c.history) + ")");
@@ -365,19 +365,7 @@ void UctPlanner::appendDiscretized(const State& s, State& out) const {
     out.insert(out.end(), s.begin(), s.end());
     return;
   }
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const int bins = config_.statesPerDim[i];
-    const float factor = bins > 0 ? (config_.featMax[i] - config_.featMin[i]) / bins : 0.0f;
-    if (!(factor > 0.0f)) {  // continuous feature, or a constant one
-      out.push_back(s[i]);
-      continue;
-    }
-    // As the original's DiscretizationAgent: round half away from zero to a multiple of
-    // factor (trunc instead of a cast to int, which is undefined for huge values).
-    const float bin = s[i] > 0.0f ? std::trunc((s[i] + factor / 2) / factor)
-                                  : std::trunc((s[i] - factor / 2) / factor);
-    out.push_back(factor * bin + 0.0f);  // + 0.0f turns -0 into +0
-  }
+  for (std::size_t i = 0; i < s.size(); ++i) out.push_back(grid_.bin(i, s[i]));
 }
 
 void UctPlanner::buildKey(const State& actual, const std::vector<int>& history, State& key) const {

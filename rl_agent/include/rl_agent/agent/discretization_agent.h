@@ -1,13 +1,9 @@
 /**
  * DiscretizationAgent: wraps another agent and bins every state feature before the inner
- * agent sees it (the original's DiscretizationAgent, `--nstates`, ORIGINAL.md §1.3):
- *
- *   factor = (max − min) / n,  bin = int((s + factor/2) / factor) if s > 0
- *                              else int((s − factor/2) / factor),  ds = factor · bin
- *
- * i.e. rounding to the nearest multiple of `factor` (bins are anchored at 0, not at min, as in
- * the original). A feature with n = 0 or a zero range stays continuous. Seed experiences are
- * binned the same way. The wrapper forwards savePolicy and the reward breakdown.
+ * agent sees it (the original's DiscretizationAgent, `--nstates`, ORIGINAL.md §1.3), on the
+ * StateGrid (state_grid.h): rounding to the nearest multiple of (max − min) / n, anchored at 0.
+ * A feature with n = 0 or a zero range stays continuous. Seed experiences are binned the same
+ * way. The wrapper forwards savePolicy and the reward breakdown.
  */
 #pragma once
 
@@ -15,6 +11,7 @@
 #include <vector>
 
 #include "rl_agent/agent/reward_breakdown_source.h"
+#include "rl_agent/planner/state_grid.h"
 #include "rl_common/agent.h"
 
 namespace rl_agent {
@@ -39,7 +36,7 @@ class DiscretizationAgent : public rl_common::Agent, public RewardBreakdownSourc
 
  private:
   std::unique_ptr<rl_common::Agent> inner_;
-  std::vector<float> factor_;  ///< per feature; 0: continuous
+  StateGrid grid_;
 };
 
 }  // namespace rl_agent

@@ -48,6 +48,7 @@
 #include "rl_agent/model/exploration_model.h"
 #include "rl_agent/model/tabular_model.h"
 #include "rl_agent/planner/real_time_planner.h"
+#include "rl_agent/planner/state_grid.h"
 #include "rl_agent/planner/state_space_planner.h"
 #include "rl_agent/planner/uct_planner.h"
 #include "rl_agent/reward/explorer_registry.h"
@@ -132,7 +133,7 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   bool boltzmann_ = false;
   bool exploring_ = true;  ///< false after setIntrinsicEnabled(false): act greedily
   float tau_ = 0.2f;
-  std::vector<float> binFactor_;  ///< --nstates bin width per feature (empty: no binning)
+  StateGrid grid_;  ///< --nstates binning of the inputs (none for m5tree)
   // Synchronous mode owns model and planner; real-time mode hands them to realTime_ and keeps
   // raw pointers for the few calls that need them (under RealTimePlanner's access rules).
   std::unique_ptr<rl_common::MDPModel> model_;

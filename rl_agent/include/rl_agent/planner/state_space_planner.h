@@ -26,6 +26,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "rl_agent/planner/state_grid.h"
 #include "rl_agent/planner/state_hash.h"
 #include "rl_common/planner.h"
 #include "rl_common/random.h"
@@ -117,8 +118,8 @@ class StateSpacePlanner : public rl_common::Planner {
   std::vector<int> roots_;
   std::vector<char> isRoot_;
   bool newRoots_ = false;
-  bool solved_ = false;           // solved without a budget limit and nothing changed since
-  std::vector<float> binFactor_;  // per feature; empty: no binning
+  bool solved_ = false;  // solved without a budget limit and nothing changed since
+  StateGrid grid_;
 };
 
 }  // namespace rl_agent

@@ -55,6 +55,7 @@
 #include <utility>
 #include <vector>
 
+#include "rl_agent/planner/state_grid.h"
 #include "rl_agent/planner/state_hash.h"
 #include "rl_common/mdp_model.h"
 #include "rl_common/planner.h"
@@ -215,6 +216,7 @@ class UctPlanner : public rl_common::Planner {
   Config config_;
   rl_common::Random rng_;
   double ucbConstant_;  // B·2
+  StateGrid grid_;      ///< statesPerDim's bins (precomputed widths)
   bool discretising_ = false;
   std::shared_ptr<const rl_common::ModelView> model_;
   std::uint64_t modelVersion_ = 0;
