@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
+#include <string>
 
 namespace rl_experiment {
 
@@ -36,6 +38,32 @@ double variationalDistance(const StateDistribution& p, const rl_common::StateAct
   return 0.5 * (diff + std::max(0.0, qTotal - inside));
 }
 
+double marginalDistance(const StateDistribution& p, const rl_common::StateActionInfo& q,
+                        std::size_t feature) {
+  std::map<float, double> diff;
+  for (const auto& [s, prob] : p) {
+    if (feature >= s.size()) {
+      throw std::invalid_argument("marginalDistance(): feature " + std::to_string(feature) +
+                                  " out of range");
+    }
+    diff[s[feature]] += prob;
+  }
+  if (!q.factored.empty()) {
+    if (feature >= q.factored.size()) {
+      throw std::invalid_argument("marginalDistance(): the prediction has no feature " +
+                                  std::to_string(feature));
+    }
+    for (const auto& [v, prob] : q.factored[feature]) diff[v] -= prob;
+  } else {
+    for (const auto& [s, prob] : q.transitions) {
+      if (feature < s.size()) diff[s[feature]] -= prob;
+    }
+  }
+  double sum = 0.0;
+  for (const auto& entry : diff) sum += std::fabs(entry.second);
+  return 0.5 * sum;
+}
+
 StateDistribution nextStateDistribution(const std::vector<rl_common::Outcome>& outcomes) {
   StateDistribution out;
   out.reserve(outcomes.size());
@@ -56,15 +84,39 @@ double ModelAccuracy::evaluate(const rl_common::ModelView& model, rl_common::Ran
   if (samples < 1) {
     throw std::invalid_argument("ModelAccuracy::evaluate(): samples must be >= 1");
   }
-  double sum = 0.0;
+  return evaluateDetailed(model, rng, samples).joint;
+}
+
+ModelAccuracy::Report ModelAccuracy::evaluateDetailed(const rl_common::ModelView& model,
+                                                      rl_common::Random& rng, int samples) const {
+  if (samples < 1) {
+    throw std::invalid_argument("ModelAccuracy::evaluateDetailed(): samples must be >= 1");
+  }
+  const std::size_t d = states_.front().size();
+  Report r;
+  r.marginal.assign(d, 0.0);
+  std::vector<double> actionSum(static_cast<std::size_t>(numActions_), 0.0);
+  std::vector<int> actionCount(static_cast<std::size_t>(numActions_), 0);
   const int last = static_cast<int>(states_.size()) - 1;
   for (int i = 0; i < samples; ++i) {
     const rl_common::State& s = states_[static_cast<std::size_t>(rng.uniformInt(0, last))];
     const int a = rng.uniformInt(0, numActions_ - 1);
     const StateDistribution truth = nextStateDistribution(truth_.transitions(s, a));
-    sum += variationalDistance(truth, model.query(s, a));
+    const rl_common::StateActionInfo q = model.query(s, a);
+    const double vd = variationalDistance(truth, q);
+    r.joint += vd;
+    actionSum[static_cast<std::size_t>(a)] += vd;
+    ++actionCount[static_cast<std::size_t>(a)];
+    for (std::size_t j = 0; j < d; ++j) r.marginal[j] += marginalDistance(truth, q, j);
   }
-  return sum / samples;
+  r.joint /= samples;
+  for (double& m : r.marginal) m /= samples;
+  r.perAction.resize(actionSum.size());
+  for (std::size_t a = 0; a < actionSum.size(); ++a) {
+    r.perAction[a] = actionCount[a] > 0 ? actionSum[a] / actionCount[a]
+                                        : std::numeric_limits<double>::quiet_NaN();
+  }
+  return r;
 }
 
 }  // namespace rl_experiment

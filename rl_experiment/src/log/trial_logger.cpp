@@ -1,5 +1,7 @@
 #include "rl_experiment/log/trial_logger.h"
 
+#include <cmath>
+
 #include <cstdio>
 
 #include "rl_experiment/runner/agent_probe.h"
@@ -81,17 +83,25 @@ void TrialLogger::onCheckpoint(long stepsDone, Phase phase, const rl_common::Age
     evaluatorTried_ = true;
     evaluator_ = std::make_unique<ModelAccuracy>(*truth, env.numActions());
     if (!folder_.empty()) {
-      accuracy_ = std::make_unique<CsvFile>(
-          join(folder_, accuracyFile(info_.trial)),
-          std::vector<std::string>{"trial", "step", "phase", "variational_distance", "samples"});
+      // Joint distance, then each feature's marginal and the joint per action (diagnosis).
+      std::vector<std::string> header{"trial", "step", "phase", "variational_distance", "samples"};
+      const std::size_t d = env.sensation().size();
+      for (std::size_t j = 0; j < d; ++j) header.push_back("marginal_f" + std::to_string(j));
+      for (int a = 0; a < env.numActions(); ++a) header.push_back("action_" + std::to_string(a));
+      accuracy_ = std::make_unique<CsvFile>(join(folder_, accuracyFile(info_.trial)), header);
     }
   }
   if (!evaluator_) return;
-  const double vd = evaluator_->evaluate(*model, evalRng_, eval_.samples);
-  lastAccuracy_ = vd;
+  const ModelAccuracy::Report report =
+      evaluator_->evaluateDetailed(*model, evalRng_, eval_.samples);
+  lastAccuracy_ = report.joint;
   if (accuracy_) {
-    accuracy_->row({std::to_string(info_.trial), std::to_string(stepsDone), phaseName(phase),
-                    formatNumber(vd), std::to_string(eval_.samples)});
+    std::vector<std::string> row{std::to_string(info_.trial), std::to_string(stepsDone),
+                                 phaseName(phase), formatNumber(report.joint),
+                                 std::to_string(eval_.samples)};
+    for (double m : report.marginal) row.push_back(formatNumber(m));
+    for (double a : report.perAction) row.push_back(std::isnan(a) ? "" : formatNumber(a));
+    accuracy_->row(row);
   }
 }
 

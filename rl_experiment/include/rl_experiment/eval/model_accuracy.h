@@ -14,6 +14,11 @@
  * Q the predicted distribution,
  *     sum_{s'} |P(s') - Q(s')| = sum_{s' in supp P} |P(s') - Q(s')| + (|Q| - sum_{s' in supp P}
  * Q(s')), where |Q| is Q's total mass (1 for a normalised prediction).
+ *
+ * Beside the joint distance, evaluateDetailed() gives each feature's marginal distance
+ * TV(P_j, Q_j) over the same samples. The joint distance of a factored model compounds its
+ * features' errors (roughly 1 - prod_j (1 - TV_j)), so the marginals show which features carry
+ * the error; and the joint distance per action shows which actions do.
  */
 #pragma once
 
@@ -39,6 +44,10 @@ double variationalDistance(const StateDistribution& p, const rl_common::StateAct
 /// The true next-state distribution of an outcome list (rewards and terminal flags dropped).
 StateDistribution nextStateDistribution(const std::vector<rl_common::Outcome>& outcomes);
 
+/// Marginal distance of one feature: 1/2 * sum_v |P(s'_j = v) - Q(s'_j = v)|.
+double marginalDistance(const StateDistribution& p, const rl_common::StateActionInfo& q,
+                        std::size_t feature);
+
 /// Mean variational distance between a learned model and the true dynamics.
 class ModelAccuracy {
  public:
@@ -49,6 +58,17 @@ class ModelAccuracy {
   /// Mean TV over `samples` state-actions drawn with `rng`. Throws std::invalid_argument if
   /// samples < 1.
   double evaluate(const rl_common::ModelView& model, rl_common::Random& rng, int samples) const;
+
+  /// One measurement in detail: the joint mean (evaluate() returns it),
+  /// each feature's mean marginal distance, and the joint mean per action (NaN for an action
+  /// not drawn).
+  struct Report {
+    double joint = 0.0;
+    std::vector<double> marginal;   ///< one per state feature
+    std::vector<double> perAction;  ///< one per action
+  };
+  Report evaluateDetailed(const rl_common::ModelView& model, rl_common::Random& rng,
+                          int samples) const;
 
   std::size_t numReachableStates() const { return states_.size(); }
 

@@ -6,8 +6,10 @@
  *                     target,terminal          (one line per step; target: where PRESS/PICKUP
  *                                              was tried, LightWorld only)
  *   episodes-NNN.csv  trial,episode,phase,steps,reward,terminal
- *   accuracy-NNN.csv  trial,step,phase,variational_distance,samples   (agents with a model, on
- *                                              environments with a true model)
+ *   accuracy-NNN.csv  trial,step,phase,variational_distance,samples,marginal_f0..f(d-1),
+ *                     action_0..action_(A-1)   (agents with a model, on environments with a
+ *                                              true model: the joint distance, each feature's
+ *                                              marginal, the joint per action)
  *   trial-NNN.csv     the trial's summary (one header line, one row), written atomically at the
  *                     end: its presence marks the trial as finished.
  *

@@ -1,0 +1,136 @@
+#!/usr/bin/env python3
+"""Where a LightWorld explorer's model is wrong and what the explorer chose to try.
+
+Reads run folders of the experiment runner (steps-*.csv, accuracy-*.csv, trial-*.csv) and
+prints, per folder, as Markdown tables:
+
+  * the model's distance at a checkpoint (default: the last exploration checkpoint): the joint
+    variational distance, each feature's marginal distance (which features carry the error) and
+    the joint distance per action (which actions do);
+  * the exploration steps by class (a move, or PICKUP/PRESS and where it was tried), with the
+    variance and novelty bonuses the agent met on them;
+  * doors passed (exploration reward / 10) and PRESS on objects.
+
+Usage: diagnose_exploration.py [--step N] FOLDER [FOLDER ...]
+"""
+import argparse
+import collections
+import csv
+import glob
+import os
+import statistics
+import sys
+
+# LightWorld's 17 features (shared/spec/ORIGINAL.md §4.2) and 6 actions.
+FEATURES = ["ns", "ew", "have_key", "door_open", "room", "key_n", "key_e", "key_w", "key_s",
+            "lock_n", "lock_e", "lock_w", "lock_s", "door_n", "door_e", "door_w", "door_s"]
+ACTIONS = ["N", "E", "W", "S", "PICKUP", "PRESS"]
+PRESS_ON_OBJECTS = ["press_key", "press_lock", "press_lock_wrong", "press_door"]
+
+
+def rows(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def mean(values):
+    return statistics.mean(values) if values else float("nan")
+
+
+def sd(values):
+    return statistics.stdev(values) if len(values) > 1 else float("nan")
+
+
+def checkpoint_rows(folder, step):
+    out = []
+    for path in sorted(glob.glob(os.path.join(folder, "accuracy-*.csv"))):
+        r = rows(path)
+        explore = [x for x in r if x["phase"] == "explore"]
+        if step is None:
+            pick = explore[-1:] if explore else r[-1:]
+        else:
+            pick = [x for x in r if int(x["step"]) == step]
+        out += pick
+    return out
+
+
+def accuracy_table(folder, step):
+    acc = checkpoint_rows(folder, step)
+    if not acc:
+        return ["(no accuracy logs)"]
+    lines = []
+    joint = [float(x["variational_distance"]) for x in acc]
+    where = sorted({x["step"] for x in acc})
+    lines.append("model distance at step %s over %d trials: joint %.3f (sd %.3f)" %
+                 ("/".join(where), len(acc), mean(joint), sd(joint)))
+    if "marginal_f0" in acc[0]:
+        marg = [mean([float(x["marginal_f%d" % j]) for x in acc]) for j in range(len(FEATURES))
+                if "marginal_f%d" % j in acc[0]]
+        lines += ["", "| feature | " + " | ".join(FEATURES[:len(marg)]) + " |",
+                  "|---|" + "---|" * len(marg),
+                  "| marginal distance | " + " | ".join("%.3f" % m for m in marg) + " |"]
+        per_action = []
+        for a in range(len(ACTIONS)):
+            vals = [float(x["action_%d" % a]) for x in acc if x.get("action_%d" % a)]
+            per_action.append(mean(vals))
+        lines += ["", "| action | " + " | ".join(ACTIONS) + " |", "|---|" + "---|" * len(ACTIONS),
+                  "| joint distance | " + " | ".join("%.3f" % m for m in per_action) + " |"]
+    return lines
+
+
+def class_table(folder):
+    stats = collections.defaultdict(lambda: [0, 0.0, 0.0])
+    trials = 0
+    for path in sorted(glob.glob(os.path.join(folder, "steps-*.csv"))):
+        trials += 1
+        for r in rows(path):
+            if r["phase"] != "explore":
+                continue
+            a = int(r["action"])
+            name = "move" if a < 4 else ACTIONS[a] + " " + (r["target"] or "?")
+            s = stats[name]
+            s[0] += 1
+            s[1] += float(r["variance"] or 0)
+            s[2] += float(r["novelty"] or 0)
+    if not trials:
+        return ["(no step logs)"]
+    total = sum(s[0] for s in stats.values())
+    lines = ["| exploration steps | per trial | share | mean variance bonus | mean novelty bonus |",
+             "|---|---|---|---|---|"]
+    for name, (n, v, nov) in sorted(stats.items(), key=lambda kv: -kv[1][0]):
+        lines.append("| %s | %.1f | %.3f | %.4f | %.4f |" %
+                     (name, n / trials, n / total, v / n, nov / n))
+    return lines
+
+
+def summary_line(folder):
+    trials = [rows(p)[0] for p in sorted(glob.glob(os.path.join(folder, "trial-*.csv")))]
+    if not trials:
+        return "(no finished trials)"
+    doors = [float(t["explore_reward"] or 0) / 10 for t in trials]
+    press = [sum(float(t.get(k) or 0) for k in PRESS_ON_OBJECTS) for t in trials]
+    return ("%d trials: doors passed while exploring %.2f per trial (sd %.2f); PRESS on objects "
+            "%.1f per trial (sd %.1f)" % (len(trials), mean(doors), sd(doors), mean(press),
+                                          sd(press)))
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--step", type=int, default=None,
+                    help="accuracy checkpoint to report (default: the last exploration one)")
+    ap.add_argument("folders", nargs="+")
+    args = ap.parse_args(argv)
+    for folder in args.folders:
+        if not os.path.isdir(folder):
+            print("diagnose_exploration.py: no such folder: %s" % folder, file=sys.stderr)
+            return 2
+    for folder in args.folders:
+        print("## %s\n" % os.path.basename(os.path.normpath(folder)))
+        print(summary_line(folder) + "\n")
+        print("\n".join(accuracy_table(folder, args.step)) + "\n")
+        print("\n".join(class_table(folder)) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
