@@ -548,3 +548,57 @@ TEST(UctPlanner, ARepeatedStateOnARolloutTriesAnotherAction) {
     }
   }
 }
+
+TEST(UctPlanner, NormalizedBoundFollowsSmallRewardsTheRangeBoundDoesNot) {
+  // One state, three actions, each ending the episode: action 2 pays 0.02, the others 0.01 (the
+  // scale of VANIR's bonuses) in a task whose external range is 10. The Range bound's constant,
+  // 2·10/(1−γ) = 2000, dwarfs the 0.01 difference: visits stay almost uniform. The Normalized
+  // bound weighs Q by the state's own Q range and gives the better action most of the visits.
+  auto fn = [](const State&, int a) {
+    return outcome({{State{0.0f}, 1.0}}, a == 2 ? 0.02f : 0.01f, 1.0f);
+  };
+  for (auto bound : {UctPlanner::UcbBound::Range, UctPlanner::UcbBound::Normalized}) {
+    UctPlanner::Config c = config(3, 0.99, 1.0f);
+    c.rewardRange = 10.0;
+    c.ucbBound = bound;
+    c.ucbC = 0.5;
+    UctPlanner planner(c, 13);
+    planner.setModel(view(fn));
+    planner.plan(State{0.0f}, PlanningBudget::ofRollouts(600));
+    const double best = static_cast<double>(planner.actionVisits(State{0.0f}, 2));
+    const double other = static_cast<double>(planner.actionVisits(State{0.0f}, 0));
+    if (bound == UctPlanner::UcbBound::Range) {
+      EXPECT_LT(best / other, 1.2);
+    } else {
+      EXPECT_GT(best / other, 4.0);
+    }
+    EXPECT_EQ(planner.bestAction(State{0.0f}), 2);
+  }
+  UctPlanner::Config bad = config(3, 0.99, 1.0f);
+  bad.ucbC = -1.0;
+  EXPECT_THROW(UctPlanner(bad, 1), std::invalid_argument);
+}
+
+TEST(UctPlanner, BonusOncePerPathStopsASelfLoopFromCollectingItsBonusAgain) {
+  // From state 0, action 0 is a self-loop whose prediction carries an intrinsic bonus of 1 (as
+  // PICKUP off the key when the trees disagree); action 1 ends the episode and pays 0. With
+  // λ 1, γ 0.5 and depth 3 the only rollouts are [0,0,0 | cap] (and ones ending on action 1).
+  // Collected on every repeat, looping returns 1 + .5 + .25 + .125·maxQ: Q(0, 0) → 2 (the
+  // fixed point of Q = 1.75 + .125·Q); collected once, it returns 1 + .125·maxQ: Q → 8/7.
+  auto fn = [](const State&, int a) {
+    if (a == 1) return outcome({{State{0.0f}, 1.0}}, 0.0f, 1.0f);
+    StateActionInfo info = outcome({{State{0.0f}, 1.0}}, 1.0f);
+    info.varianceReward = 1.0f;
+    return info;
+  };
+  for (bool once : {false, true}) {
+    UctPlanner::Config c = config(2, 0.5, 1.0f);
+    c.lambda = 1.0;
+    c.maxDepth = 3;
+    c.bonusOncePerPath = once;
+    UctPlanner planner(c, 17);
+    planner.setModel(view(fn));
+    planner.plan(State{0.0f}, PlanningBudget::ofRollouts(3000));
+    EXPECT_NEAR(planner.qValues(State{0.0f})[0], once ? 8.0 / 7.0 : 2.0, 1e-3) << once;
+  }
+}

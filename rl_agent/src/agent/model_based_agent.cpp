@@ -63,6 +63,10 @@ UctPlanner::Config plannerConfig(const AgentOptions& o,
   c.history = o.history;
   c.trackActual = true;
   c.countPathVisits = o.pathvisits;
+  c.ucbBound =
+      o.ucb == "normalized" ? UctPlanner::UcbBound::Normalized : UctPlanner::UcbBound::Range;
+  c.ucbC = o.ucbc;
+  c.bonusOncePerPath = o.bonusonce;
   return c;
 }
 

@@ -85,7 +85,11 @@ UctPlanner::UctPlanner(const Config& config, std::uint64_t seed) : config_(confi
   if (c.maxCachedPredictions < 1) {
     throw badConfig("maxCachedPredictions must be at least 1");
   }
+  if (!(c.ucbC >= 0.0) || !std::isfinite(c.ucbC)) {
+    throw badConfig("ucbC must be finite and >= 0 (got " + std::to_string(c.ucbC) + ")");
+  }
   ucbConstant_ = 2.0 * std::max(c.rewardRange, 1.0) / (1.0 - c.gamma);
+  trackPath_ = c.countPathVisits || c.bonusOncePerPath;
   rootHistory_.assign(static_cast<std::size_t>(c.history), -1);
 }
 
@@ -220,12 +224,18 @@ void UctPlanner::rollout(const State& root) {
         break;
       }
       const int a = selectUcbAction(rec);
-      if (config_.countPathVisits) ++rec.pathChosen[a];
+      if (trackPath_) ++rec.pathChosen[a];
       const double alpha = 10.0 / (static_cast<double>(rec.actionVisits[a]) + 10.0);
       const StateActionInfo& info = prediction(rec, key_, a);
       const double p = info.termProb;
       const bool terminal = p >= 1.0 || (p > 0.0 && rng_.bernoulli(p));
-      path_.push_back(Step{&rec, a, info.reward, alpha, terminal, rec.onPath == 0});
+      double reward = info.reward;
+      if (config_.bonusOncePerPath && rec.pathChosen[a] > 1) {
+        // This state-action was tried earlier on this rollout: what it had to teach was
+        // learned then, so only its external reward counts now.
+        reward -= static_cast<double>(info.varianceReward) + info.noveltyReward + info.otherReward;
+      }
+      path_.push_back(Step{&rec, a, reward, alpha, terminal, rec.onPath == 0});
       if (terminal) {
         break;
       }
@@ -268,7 +278,7 @@ void UctPlanner::rollout(const State& root) {
 void UctPlanner::clearPath() {
   for (const Step& st : path_) {
     st.record->onPath = 0;
-    if (config_.countPathVisits) st.record->pathChosen[st.action] = 0;
+    if (trackPath_) st.record->pathChosen[st.action] = 0;
   }
 }
 
@@ -394,7 +404,7 @@ UctPlanner::Record& UctPlanner::touch(const State& key) {
       q = rng_.uniform(0.0, 0.01);
     }
     r.actionVisits.assign(static_cast<std::size_t>(config_.numActions), 1);
-    if (config_.countPathVisits) {
+    if (trackPath_) {
       r.pathChosen.assign(static_cast<std::size_t>(config_.numActions), 0);
     }
     r.version = modelVersion_;
@@ -435,9 +445,18 @@ int UctPlanner::selectUcbAction(const Record& r) {
   values_.resize(static_cast<std::size_t>(config_.numActions));
   double best = -std::numeric_limits<double>::infinity();
   int ties = 0;
+  // Normalized bound: Q rescaled to [0, 1] by this state's own Q range, so the bonus term
+  // weighs against the returns the planner really sees, whatever their scale.
+  double qLow = 0.0, qScale = 1.0, c = ucbConstant_;
+  if (config_.ucbBound == UcbBound::Normalized) {
+    const auto [lo, hi] = std::minmax_element(r.q.begin(), r.q.end());
+    qLow = *lo;
+    qScale = *hi - *lo > 1e-12 ? 1.0 / (*hi - *lo) : 0.0;
+    c = config_.ucbC;
+  }
   for (int a = 0; a < config_.numActions; ++a) {
     const long n = r.actionVisits[a] + (onPath > 0 ? r.pathChosen[a] : 0);
-    const double v = r.q[a] + ucbConstant_ * std::sqrt(logN / static_cast<double>(n));
+    const double v = (r.q[a] - qLow) * qScale + c * std::sqrt(logN / static_cast<double>(n));
     values_[a] = v;
     if (v > best) {
       best = v;

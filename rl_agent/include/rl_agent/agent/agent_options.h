@@ -41,6 +41,12 @@ struct AgentOptions {
   /// UCT: count the path's choices at a state met again on a rollout (UctPlanner::Config::
   /// countPathVisits); off by default, as the original.
   bool pathvisits = false;
+  /// UCT: intrinsic bonus once per state-action per rollout (UctPlanner::Config::
+  /// bonusOncePerPath).
+  bool bonusonce = false;
+  /// UCT's bound (UctPlanner::UcbBound): "range" (the original's) or "normalized".
+  std::string ucb = "range";
+  float ucbc = 1.0f;  ///< c of the normalized bound
 };
 
 /// True if --nstates bins some feature.

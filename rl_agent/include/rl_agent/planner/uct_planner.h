@@ -65,6 +65,18 @@ namespace rl_agent {
 
 class UctPlanner : public rl_common::Planner {
  public:
+  /// How the UCB term is weighed against Q.
+  enum class UcbBound {
+    /// The original's Q + B·2·sqrt(ln N(s)/N(s,a)), B = max(R_range,1)/(1−γ): the bound of a
+    /// return that can reach R_range on every step.
+    Range,
+    /// (Q − min_a Q)/(max_a Q − min_a Q) + c·sqrt(ln N(s)/N(s,a)): Q normalised by the
+    /// state's own Q range (the min-max normalisation of MuZero, Schrittwieser et al., Nature
+    /// 588, 2020), so the search concentrates on the best actions whatever the scale of the
+    /// rewards. With intrinsic rewards of order 0.01–1 the Range bound is hundreds of times
+    /// the Q differences and selection is uniform.
+    Normalized,
+  };
   struct Config {
     int numActions = 0;        ///< A, at least 1
     double gamma = 0.99;       ///< discount, in [0, 1)
@@ -91,6 +103,14 @@ class UctPlanner : public rl_common::Planner {
     /// original (the default, for faithfulness). The first visit of a state on a rollout is
     /// the same either way. The agents' --pathvisits.
     bool countPathVisits = false;
+    /// A rollout collects a state-action's intrinsic bonus (variance, novelty, other) only the
+    /// first time it takes that action at that state; a repeat earns the external reward
+    /// only. The original collects it on every repeat, so a self-loop whose trees disagree
+    /// (PICKUP away from the key) is worth bonus/(1−γ), a hundred times a bonus elsewhere,
+    /// and a search that follows its values sits on the self-loop. false: as the original.
+    bool bonusOncePerPath = false;
+    UcbBound ucbBound = UcbBound::Range;  ///< the original's bound by default
+    double ucbC = 1.0;                    ///< c of the Normalized bound (≥ 0)
   };
 
   /// Throws std::invalid_argument, naming the option, if the configuration is invalid.
@@ -174,7 +194,7 @@ class UctPlanner : public rl_common::Planner {
     std::uint64_t version = 0;              // model version whose count cap has been applied
     std::uint64_t lastTouched = 0;          // rollout stamp: records of the current rollout stay
     int onPath = 0;                         // occurrences on the current rollout's path
-    std::vector<int> pathChosen;            // per action: chosen on the path (countPathVisits)
+    std::vector<int> pathChosen;            // per action: chosen on the path (trackPath_)
     int cached = 0;                         // predictions cached (version != 0)
     std::vector<Prediction> predictions;    // empty, or A entries
     const rl_common::State* key = nullptr;  // the table's key of this record
@@ -218,6 +238,7 @@ class UctPlanner : public rl_common::Planner {
   double ucbConstant_;  // B·2
   StateGrid grid_;      ///< statesPerDim's bins (precomputed widths)
   bool discretising_ = false;
+  bool trackPath_ = false;  ///< pathChosen is kept (countPathVisits or bonusOncePerPath)
   std::shared_ptr<const rl_common::ModelView> model_;
   std::uint64_t modelVersion_ = 0;
   std::uint64_t stamp_ = 0;
