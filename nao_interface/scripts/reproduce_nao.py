@@ -15,8 +15,9 @@ step), the pink runs Fig. 11 (highest pink pixel count seen by each step); the t
 Figs. 12-14 (average task reward per step). The paper's first question, how much of the state
 space the agent explored, is also measured directly: fig_cells_explore.png counts the distinct
 shoulder targets (cells of the 8-degree grid the actions move on) commanded by each step.
-Writes DIR/fig10_button_explore.png ... fig14, DIR/results.md (a table) and the runs under
-DIR/runs/.
+Writes DIR/fig10_button_explore.png ... fig14, DIR/results.md (a table; per column the p-value
+of a two-sided Welch t-test of random's per-trial values against TEXPLORE-VANIR's, with
+rl_experiment/scripts/stats.py) and the runs under DIR/runs/.
 --quick: 6 trials, 400 exploration and 100 task steps, 100 rollouts (a few minutes on 2 cores);
 the full run is the paper's 13 trials, 400 and 200 steps.
 
@@ -46,6 +47,8 @@ STRATEGIES = {
     "random": ["--agent", "texplore", "--explore", "random"],
 }
 TASKS = ["pink", "button", "mic"]
+# The strategy the table's p-values compare against.
+REFERENCE = "texplore-vanir"
 # Bins per feature over the naoarm ranges (nao_arm_task.cpp): RShoulderPitch 242 deg / 30,
 # RShoulderRoll 97 deg / 12 (both about the 8-degree action step), hand x, y, z 500 mm / 25,
 # pink 153600 / 154, bumper 1 / 1 (0 or 1), microphone 4000 / 20.
@@ -72,6 +75,30 @@ def find_experiment():
         return found
     sys.exit("reproduce nao: cannot find the experiment runner; build first (./rl build) or "
              "set RL_EXPERIMENT")
+
+
+def import_stats():
+    """rl_experiment's stats.py (the Welch t-test): in the source tree next to this package,
+    else wherever catkin_find finds it (the devel or install space of rl_experiment)."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    folder = os.path.join(here, "..", "..", "rl_experiment", "scripts")
+    looked = [os.path.abspath(folder)]
+    for rel in ("scripts/stats.py", "stats.py"):
+        if os.path.exists(os.path.join(folder, "stats.py")):
+            break
+        try:
+            found = subprocess.run(["catkin_find", "--first-only", "rl_experiment", rel],
+                                   capture_output=True, text=True, check=False).stdout.split()
+        except OSError:
+            found = []
+        folder = os.path.dirname(found[0]) if found else folder
+        looked.append("catkin_find rl_experiment " + rel)
+    if not os.path.exists(os.path.join(folder, "stats.py")):
+        sys.exit("reproduce nao: cannot find rl_experiment's stats.py (looked in "
+                 + ", ".join(looked) + ")")
+    sys.path.insert(0, os.path.abspath(folder))
+    import stats
+    return stats
 
 
 def run_all(args, exe):
@@ -154,6 +181,7 @@ def analyse(args):
         n_explore = min(len([1 for ph, _ in s if ph == "explore"]) for s in button)
         r["fig10"] = [mean([1.0 if (p is not None and p <= i) else 0.0 for p in pressed_at])
                       for i in range(n_explore)]
+        r["pressed-trials"] = [0.0 if p is None else 1.0 for p in pressed_at]
         # Fig. 11: highest pink count seen by each exploration step, averaged over trials.
         curves = []
         for steps in pink:
@@ -166,6 +194,7 @@ def analyse(args):
             curves.append(curve)
         n = min(len(c) for c in curves)
         r["fig11"] = [mean([c[i] for c in curves]) for i in range(n)]
+        r["final-max-pink-trials"] = [c[n - 1] for c in curves] if n else []
         # The explored part of the arm's space: distinct shoulder cells commanded by each step.
         cells = [cells_curve([a for ph, _, a in steps if ph == "explore"])
                  for steps in read_steps(args, name, "button", with_actions=True)]
@@ -178,9 +207,13 @@ def analyse(args):
             task_rewards = [[rw for ph, rw in s if ph == "task"] for s in runs]
             n = min(len(t) for t in task_rewards)
             r[f"task-{task}"] = [mean([t[i] for t in task_rewards]) for i in range(n)]
-            r[f"task-{task}-mean"] = mean([mean(t) for t in task_rewards])
+            r[f"task-{task}-trials"] = [mean(t) for t in task_rewards]
+            r[f"task-{task}-mean"] = mean(r[f"task-{task}-trials"])
             r[f"task-{task}-trials-hit"] = sum(1 for t in task_rewards if max(t, default=0) > 800) \
                 if task == "mic" else None
+            if task == "mic":
+                r["mic-hit-trials"] = [1.0 if max(t, default=0) > 800 else 0.0
+                                       for t in task_rewards]
         r["pressed"] = sum(1 for p in pressed_at if p is not None)
         r["trials"] = len(pressed_at)
         r["max-pink"] = max(max(c) if c else 0 for c in curves)
@@ -230,7 +263,20 @@ def reachable_cells():
     return (hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1)
 
 
-def table(args, res):
+# The table's measured columns: their per-trial values (the key in analyse()'s results).
+P_COLUMNS = ["cells-final", "pressed-trials", "final-max-pink-trials", "task-pink-trials",
+             "task-button-trials", "task-mic-trials", "mic-hit-trials"]
+
+
+def p_cells(stats, res, name):
+    """The p column of each measured column for strategy `name`: Welch against REFERENCE."""
+    if name == REFERENCE or REFERENCE not in res:
+        return ["ref" if name == REFERENCE else "n/a"] * len(P_COLUMNS)
+    return [stats.format_p(stats.welch_t_test(res[name][key], res[REFERENCE][key])[2])
+            for key in P_COLUMNS]
+
+
+def table(args, res, stats):
     lines = [
         f"# Nao arm experiments (TEXPLORE-VANIR paper section 5.2), simulated Nao",
         "",
@@ -238,20 +284,25 @@ def table(args, res):
         f"{args.task_steps} task steps, {args.rollouts} UCT rollouts per step, UCT lambda "
         f"{args.lam}, states binned by --nstates {args.nstates}, task rewards {args.task_rewards} "
         f"at the switch, seed {args.seed}. Shoulder cells: distinct 8-degree shoulder targets "
-        f"commanded while exploring, of {reachable_cells()} (mean and range over trials).",
+        f"commanded while exploring, of {reachable_cells()} (mean and range over trials). "
+        f"Each p follows its column.",
         "",
-        "| strategy | shoulder cells visited while exploring | trials that pressed the button while exploring | max pink seen while exploring (mean of trials / best) "
-        "| pink task: mean reward per step | button task: mean reward per step | mic task: mean reward per step | mic task: trials with a cymbal hit (> 800) |",
-        "|---|---|---|---|---|---|---|---|",
+        "| strategy | shoulder cells visited while exploring | p | trials that pressed the button while exploring | p | max pink seen while exploring (mean of trials / best) | p "
+        "| pink task: mean reward per step | p | button task: mean reward per step | p | mic task: mean reward per step | p | mic task: trials with a cymbal hit (> 800) | p |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     for name, r in res.items():
         c = r["cells-final"]
+        p = p_cells(stats, res, name)
         lines.append(
-            f"| {name} | {mean(c):.1f} ({min(c)}-{max(c)}) | {r['pressed']}/{r['trials']} "
-            f"| {r['final-max-pink']:.0f} / {r['max-pink']:.0f} "
-            f"| {r['task-pink-mean']:.1f} | {r['task-button-mean']:.1f} | {r['task-mic-mean']:.1f} "
-            f"| {r['task-mic-trials-hit']}/{r['trials']} |")
-    lines += ["", "Paper (13 trials, real Nao): button pressed in 7/13 (TEXPLORE-VANIR) vs 0/13 "
+            f"| {name} | {mean(c):.1f} ({min(c)}-{max(c)}) | {p[0]} | {r['pressed']}/{r['trials']} "
+            f"| {p[1]} | {r['final-max-pink']:.0f} / {r['max-pink']:.0f} | {p[2]} "
+            f"| {r['task-pink-mean']:.1f} | {p[3]} | {r['task-button-mean']:.1f} | {p[4]} "
+            f"| {r['task-mic-mean']:.1f} | {p[5]} | {r['task-mic-trials-hit']}/{r['trials']} "
+            f"| {p[6]} |")
+    lines += ["", stats.p_value_note(REFERENCE) + " Counts are tested on each trial's 0/1 "
+              "outcome, max pink on each trial's highest count.", "",
+              "Paper (13 trials, real Nao): button pressed in 7/13 (TEXPLORE-VANIR) vs 0/13 "
               "(random); highest pink count 5434, VANIR seeing nearly twice as much pink as random; "
               "VANIR earns more task reward on pink and button; the cymbal was hit in 1 of 5 "
               "VANIR mic trials and never after random exploration.", ""]
@@ -289,10 +340,11 @@ def main():
         args.out = os.path.join(os.getcwd(), "results", "nao-quick" if args.quick else "nao")
     os.makedirs(args.out, exist_ok=True)
     exe = find_experiment()
+    stats = import_stats()
     run_all(args, exe)
     res = analyse(args)
     figs = plot(args, res)
-    print(table(args, res))
+    print(table(args, res, stats))
     print("[reproduce nao] figures: " + ", ".join(figs))
     print(f"[reproduce nao] table: {os.path.join(args.out, 'results.md')}")
 

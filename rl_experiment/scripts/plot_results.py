@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Figures and a table from experiment run folders (the TEXPLORE-VANIR paper's LightWorld plots).
 
-Usage: plot_results.py [--out DIR] [--title TEXT] [--phase task|run|all] RUN_FOLDER [RUN_FOLDER ...]
+Usage: plot_results.py [--out DIR] [--title TEXT] [--reference LABEL] RUN_FOLDER [RUN_FOLDER ...]
 
 Each RUN_FOLDER is an `--out` folder of the `experiment` runner or node. Folders with the same
 label (run.csv's `label`, e.g. from one sweep split over several machines with --first-trial)
@@ -11,8 +11,11 @@ are merged. Per label, over trials, the script draws mean +- standard error of:
   accuracy.png/.pdf  the model's mean variational distance to the true dynamics vs step (Fig. 4)
   press.png/.pdf     cumulative PRESS actions by where they were tried (Fig. 6), one panel per
                      label
-and writes results.md: final numbers with 95% confidence intervals. Needs numpy and matplotlib
-(Debian's python3-numpy, python3-matplotlib); run with /usr/bin/python3.
+and writes results.md: final numbers with 95% confidence intervals and, per column, the p-value
+of a two-sided Welch t-test of each label's per-trial values against the reference label's
+(--reference; default texplore-vanir if present, else the first label; stats.py next to this
+script). Needs numpy and matplotlib (Debian's python3-numpy, python3-matplotlib); run with
+/usr/bin/python3.
 """
 import argparse
 import csv
@@ -27,6 +30,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import stats  # noqa: E402  (rl_experiment/scripts/stats.py)
+
 # Two-sided 95% Student t quantiles for 1..30 degrees of freedom (normal beyond).
 T95 = [12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228, 2.201, 2.179,
        2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086, 2.080, 2.074, 2.069, 2.064,
@@ -34,6 +40,7 @@ T95 = [12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228, 2.
 LOCATIONS = [("key", "on the key"), ("lock", "on the lock (with key, door closed)"),
              ("lock_wrong", "on the lock (otherwise)"), ("door", "on the door"),
              ("elsewhere", "elsewhere")]
+DEFAULT_REFERENCE = "texplore-vanir"
 
 
 def read_csv(path):
@@ -200,24 +207,51 @@ def fmt3(mean, half, n):
     return "%.3f \u00b1 %.3f" % (mean, half)
 
 
-def write_table(runs, out, title):
+def pick_reference(runs, label=None):
+    """The run the p-values compare against: `label`, else texplore-vanir if present, else the
+    first run. An unknown label is a ValueError naming the valid ones."""
+    by_label = {r.label: r for r in runs}
+    if label:
+        if label not in by_label:
+            raise ValueError("unknown --reference '%s'; valid labels: %s"
+                             % (label, ", ".join(by_label)))
+        return by_label[label]
+    return by_label.get(DEFAULT_REFERENCE, runs[0])
+
+
+def table_columns(run):
+    """Per-trial values of the table's measured columns, in column order."""
+    rewards = [float(r[-1]) if len(r) else 0.0 for r in run.rewards]
+    acc = [float(d[-1]) for _, d in run.accuracy]
+    frac = []
+    for p in run.press:
+        total = sum(p[k][-1] if len(p[k]) else 0 for k, _ in LOCATIONS)
+        on = total - (p["elsewhere"][-1] if len(p["elsewhere"]) else 0)
+        frac.append(on / total if total else float("nan"))
+    sps = [float(s["steps_per_second"]) for s in run.summaries if s.get("steps_per_second")]
+    return [(rewards, fmt), (acc, fmt3), (frac, fmt3), (sps, fmt)]
+
+
+def write_table(runs, out, title, reference=None):
+    """results.md: per run the mean and 95% interval of each column, and the Welch p-value of
+    its per-trial values against the reference run's (`reference`: a label, see
+    pick_reference)."""
+    ref = pick_reference(runs, reference)
+    ref_columns = table_columns(ref)
     lines = ["# " + (title or "LightWorld results"), "",
-             "Mean over trials with 95% confidence interval (Student t).", "",
-             "| agent | trials | cumulative reward | final model variational distance | "
-             "PRESS on objects / all PRESS | steps/s |",
-             "|---|---|---|---|---|---|"]
+             "Mean over trials with 95% confidence interval (Student t); p against "
+             + ref.label + ".", "",
+             "| agent | trials | cumulative reward | p | final model variational distance | p | "
+             "PRESS on objects / all PRESS | p | steps/s | p |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
     for run in runs:
-        rewards = [float(r[-1]) if len(r) else 0.0 for r in run.rewards]
-        acc = [float(d[-1]) for _, d in run.accuracy]
-        frac = []
-        for p in run.press:
-            total = sum(p[k][-1] if len(p[k]) else 0 for k, _ in LOCATIONS)
-            on = total - (p["elsewhere"][-1] if len(p["elsewhere"]) else 0)
-            frac.append(on / total if total else float("nan"))
-        sps = [float(s["steps_per_second"]) for s in run.summaries if s.get("steps_per_second")]
-        lines.append("| %s | %d | %s | %s | %s | %s |" % (
-            run.label, len(run.rewards), fmt(*ci95(rewards)), fmt3(*ci95(acc)),
-            fmt3(*ci95(frac)), fmt(*ci95(sps))))
+        cells = [run.label, "%d" % len(run.rewards)]
+        for (values, form), (ref_values, _) in zip(table_columns(run), ref_columns):
+            cells.append(form(*ci95(values)))
+            cells.append("ref" if run is ref else
+                         stats.format_p(stats.welch_t_test(values, ref_values)[2]))
+        lines.append("| " + " | ".join(cells) + " |")
+    lines += ["", stats.p_value_note(ref.label)]
     text = "\n".join(lines) + "\n"
     tmp = os.path.join(out, ".results.md.tmp")
     with open(tmp, "w") as f:
@@ -231,6 +265,9 @@ def main(argv=None):
     ap.add_argument("folders", nargs="+", help="run folders (--out of the experiment runner)")
     ap.add_argument("--out", default="figures", help="folder for the figures and results.md")
     ap.add_argument("--title", default="", help="title prefix of the figures")
+    ap.add_argument("--reference", default=None, metavar="LABEL",
+                    help="label the table's p-values compare against (default %s if present, "
+                         "else the first label)" % DEFAULT_REFERENCE)
     args = ap.parse_args(argv)
     runs = {}
     for folder in args.folders:
@@ -241,11 +278,15 @@ def main(argv=None):
     runs = [r for r in runs.values() if r.rewards or r.accuracy]
     if not runs:
         ap.error("no trials found in " + ", ".join(args.folders))
+    try:
+        pick_reference(runs, args.reference)
+    except ValueError as e:
+        ap.error(str(e))
     os.makedirs(args.out, exist_ok=True)
     plot_reward(runs, args.out, args.title)
     plot_accuracy(runs, args.out, args.title)
     plot_press(runs, args.out, args.title)
-    sys.stdout.write(write_table(runs, args.out, args.title))
+    sys.stdout.write(write_table(runs, args.out, args.title, args.reference))
     print("figures in %s: reward, accuracy, press (.png, .pdf), results.md" % args.out)
     return 0
 

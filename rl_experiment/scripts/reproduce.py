@@ -22,7 +22,9 @@ the model-based agents are given the task's reward of their exploration steps (t
 makes them learn it from the task steps only.
 --quick uses 4 trials and shorter runs (8 minutes on 2 cores). The full run (30 trials, the
 paper's lengths) is estimated at 3-5 hours on 2 cores (not yet measured). Writes run folders,
-figures (PNG, PDF) per experiment and DIR/results.md with the final numbers and 95% intervals.
+figures (PNG, PDF) per experiment and DIR/results.md with the final numbers, 95% intervals and
+p-values (two-sided Welch t-tests of the per-trial values against TEXPLORE-VANIR: texplore-vanir,
+in the ablation texplore-v1-n3).
 A rerun resumes: finished trials are kept (use a new --out for a fresh run).
 """
 import argparse
@@ -192,16 +194,18 @@ def main(argv=None):
     experiments = [
         ("explore-task", "Figs. 4-6: %d exploration steps, then %d task steps" % (explore, task),
          agents, ["--explore-steps", str(explore), "--task-steps", str(task),
-                  "--task-rewards", args.task_rewards]),
+                  "--task-rewards", args.task_rewards], "texplore-vanir"),
         ("combined", "Fig. 7: %d steps, intrinsic and external rewards combined" % combined,
-         agents, ["--steps", str(combined)]),
+         agents, ["--steps", str(combined)], "texplore-vanir"),
         ("ablation", "Fig. 8: TEXPLORE-VANIR v/n ablation, %d steps combined" % ablation,
-         ablation_variants(rollouts, planner_opts), ["--steps", str(ablation)]),
+         ablation_variants(rollouts, planner_opts), ["--steps", str(ablation)], "texplore-v1-n3"),
     ]
     wanted = set(args.experiment or [e[0] for e in experiments])
     tables = []
     failures = 0
-    for name, what, variants, opts in experiments:
+    # Each experiment's table gives p-values against TEXPLORE-VANIR (`reference`); if its runs
+    # failed, plot_results.py falls back to its default (texplore-vanir, else the first label).
+    for name, what, variants, opts, reference in experiments:
         if name not in wanted:
             continue
         log("== %s (%s)" % (name, what))
@@ -230,8 +234,10 @@ def main(argv=None):
         if not folders:
             continue
         figs = os.path.join(out, name, "figures")
+        ref_opts = (["--reference", reference]
+                    if os.path.join(out, name, reference) in folders else [])
         res = subprocess.run([sys.executable, os.path.join(HERE, "plot_results.py"), "--out", figs,
-                              "--title", "LightWorld %s" % name] + folders,
+                              "--title", "LightWorld %s" % name] + ref_opts + folders,
                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
         if res.returncode != 0:
             failures += 1
