@@ -175,3 +175,26 @@ TEST(AgentOptions, NstatesTakesOneCountOrOnePerFeature) {
   }
   EXPECT_NE(errorOf({"--agent", "texplore", "--nstates", "3,-1"}).find(">= 0"), std::string::npos);
 }
+
+TEST(AgentOptions, UctSearchOptionsDefaultToTheOriginal) {
+  const AgentOptions d;
+  EXPECT_EQ(d.depth, 200);  // the original's MAX_DEPTH
+  EXPECT_EQ(d.ucb, "range");
+  EXPECT_FALSE(d.bonusonce);
+  EXPECT_EQ(d.taskucb, "same");
+  AgentOptions o = parse({"--agent", "texplore", "--v", "1", "--n", "3", "--depth", "50", "--ucb",
+                          "normalized", "--ucbc", "3", "--bonusonce", "--taskucb", "range"});
+  EXPECT_EQ(o.depth, 50);
+  EXPECT_EQ(o.ucb, "normalized");
+  EXPECT_FLOAT_EQ(o.ucbc, 3.0f);
+  EXPECT_TRUE(o.bonusonce);
+  EXPECT_EQ(o.taskucb, "range");
+  EXPECT_NE(errorOf({"--agent", "texplore", "--depth", "0"}).find("--depth"), std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "texplore", "--ucb", "wide"}).find("normalized"),
+            std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "texplore", "--ucbc", "-1"}).find("--ucbc"), std::string::npos);
+  // UCT options only where a UCT planner runs.
+  EXPECT_NE(errorOf({"--agent", "qlearner", "--depth", "5"}).find("--depth"), std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "rmax", "--ucb", "normalized"}).find("UCT planner"),
+            std::string::npos);
+}

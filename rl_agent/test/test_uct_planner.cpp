@@ -602,3 +602,25 @@ TEST(UctPlanner, BonusOncePerPathStopsASelfLoopFromCollectingItsBonusAgain) {
     EXPECT_NEAR(planner.qValues(State{0.0f})[0], once ? 8.0 / 7.0 : 2.0, 1e-3) << once;
   }
 }
+
+TEST(UctPlanner, SetUcbBoundSwitchesTheBoundForLaterRollouts) {
+  // The first problem of NormalizedBoundFollowsSmallRewards...: planned under the Range bound,
+  // then switched to Normalized, the later rollouts go mostly to the better action.
+  auto fn = [](const State&, int a) {
+    return outcome({{State{0.0f}, 1.0}}, a == 2 ? 0.02f : 0.01f, 1.0f);
+  };
+  UctPlanner::Config c = config(3, 0.99, 1.0f);
+  c.rewardRange = 10.0;
+  UctPlanner planner(c, 13);
+  planner.setModel(view(fn));
+  planner.plan(State{0.0f}, PlanningBudget::ofRollouts(300));
+  const long best0 = planner.actionVisits(State{0.0f}, 2);
+  const long other0 = planner.actionVisits(State{0.0f}, 0);
+  EXPECT_LT(std::abs(best0 - other0), 30);
+  planner.setUcbBound(UctPlanner::UcbBound::Normalized, 0.5);
+  planner.plan(State{0.0f}, PlanningBudget::ofRollouts(600));
+  const long best = planner.actionVisits(State{0.0f}, 2) - best0;
+  const long other = planner.actionVisits(State{0.0f}, 0) - other0;
+  EXPECT_GT(best, 4 * other);
+  EXPECT_THROW(planner.setUcbBound(UctPlanner::UcbBound::Normalized, -0.1), std::invalid_argument);
+}

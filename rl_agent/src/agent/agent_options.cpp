@@ -75,6 +75,8 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
          "UCT: at a state met again on a rollout, try the actions not yet chosen there on that "
          "rollout (the original repeats its choice, so a self-loop holds the rollout to the "
          "depth cap)");
+  p.value("depth", &o->depth, "UCT: at most this many simulated actions per rollout",
+          greaterThan(0));
   p.flag("bonusonce", &o->bonusonce, true,
          "UCT: a rollout collects a state-action's intrinsic bonus only the first time it takes "
          "it (the original collects it again on every repeat, so self-loops look rich)");
@@ -82,6 +84,9 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
            "UCT's bound: range = the original's Q + 2 max(R_range,1)/(1-gamma) sqrt(ln N/N_a); "
            "normalized = Q rescaled to [0,1] by the state's Q range + ucbc sqrt(ln N/N_a)");
   p.value("ucbc", &o->ucbc, "UCT: c of --ucb normalized", atLeast(0.0f));
+  p.choice("taskucb", &o->taskucb, {"same", "range", "normalized"},
+           "UCT's bound once intrinsic rewards are switched off (a task phase); same: --ucb");
+  p.value("taskucbc", &o->taskucbc, "UCT: c of --taskucb normalized", atLeast(0.0f));
   p.value("rollouts", &o->rollouts,
           "UCT rollouts per step, planned synchronously for reproducible runs (0: plan in real "
           "time at --actrate)",
@@ -160,15 +165,16 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
   lambdaAgents.push_back("sarsa");
   requireAgent(p, o, "lambda", lambdaAgents);
   for (const char* option :
-       {"actrate", "m", "model", "planner", "combo", "nmodels", "reltrans", "abstrans", "v", "n",
-        "history", "rollouts", "tau", "pathvisits", "ucb", "ucbc", "bonusonce"}) {
+       {"actrate",  "m",    "model",     "planner", "combo",    "nmodels", "reltrans",
+        "abstrans", "v",    "n",         "history", "rollouts", "tau",     "pathvisits",
+        "ucb",      "ucbc", "bonusonce", "taskucb", "taskucbc", "depth"}) {
     requireAgent(p, o, option, kModelBased);
   }
   const bool modelBased = isOneOf(o.agent, kModelBased);
   if (modelBased) {
     const bool searchPlanner = o.planner != "vi" && o.planner != "pi" && o.planner != "sweeping";
-    for (const char* option :
-         {"actrate", "lambda", "history", "rollouts", "pathvisits", "ucb", "ucbc", "bonusonce"}) {
+    for (const char* option : {"actrate", "lambda", "history", "rollouts", "pathvisits", "ucb",
+                               "ucbc", "bonusonce", "taskucb", "taskucbc", "depth"}) {
       if (p.given(option) && !searchPlanner) {
         throw rl_common::OptionError(std::string("option --") + option +
                                      " needs a UCT planner (uct, parallel-uct, delayed-uct, "

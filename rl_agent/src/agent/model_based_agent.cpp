@@ -67,6 +67,7 @@ UctPlanner::Config plannerConfig(const AgentOptions& o,
       o.ucb == "normalized" ? UctPlanner::UcbBound::Normalized : UctPlanner::UcbBound::Range;
   c.ucbC = o.ucbc;
   c.bonusOncePerPath = o.bonusonce;
+  c.maxDepth = o.depth;
   return c;
 }
 
@@ -363,6 +364,23 @@ void ModelBasedAgent::setIntrinsicEnabled(bool enabled) {
   if (exploration_ != nullptr) exploration_->setIntrinsicEnabled(enabled);
   if (tabular_ != nullptr) tabular_->setOptimistic(enabled);
   if (!realTime_) planner_->setModel(model_->view());
+  applyUcbBound();
+}
+
+void ModelBasedAgent::applyUcbBound() {
+  const bool task = !exploring_ && options_.taskucb != "same";
+  const std::string& name = task ? options_.taskucb : options_.ucb;
+  const auto bound =
+      name == "normalized" ? UctPlanner::UcbBound::Normalized : UctPlanner::UcbBound::Range;
+  const double c = task ? options_.taskucbc : options_.ucbc;
+  if (realTime_) {
+    realTime_->withPlanner([&](rl_common::Planner& p) {
+      static_cast<UctPlanner&>(p).setUcbBound(bound, c);
+      return 0;
+    });
+  } else if (uct_ != nullptr) {
+    uct_->setUcbBound(bound, c);
+  }
 }
 
 void ModelBasedAgent::recordExperiences(bool on) {

@@ -93,6 +93,15 @@ UctPlanner::UctPlanner(const Config& config, std::uint64_t seed) : config_(confi
   rootHistory_.assign(static_cast<std::size_t>(c.history), -1);
 }
 
+void UctPlanner::setUcbBound(UcbBound bound, double c) {
+  if (!(c >= 0.0) || !std::isfinite(c)) {
+    throw std::invalid_argument("UctPlanner::setUcbBound(): c must be finite and >= 0 (got " +
+                                std::to_string(c) + ")");
+  }
+  config_.ucbBound = bound;
+  config_.ucbC = c;
+}
+
 void UctPlanner::setModel(std::shared_ptr<const rl_common::ModelView> model) {
   if (!model) {
     throw std::invalid_argument("UctPlanner::setModel(): model is null");

@@ -44,9 +44,14 @@ struct AgentOptions {
   /// UCT: intrinsic bonus once per state-action per rollout (UctPlanner::Config::
   /// bonusOncePerPath).
   bool bonusonce = false;
+  int depth = 200;  ///< UCT's rollout depth cap (the original's MAX_DEPTH)
   /// UCT's bound (UctPlanner::UcbBound): "range" (the original's) or "normalized".
   std::string ucb = "range";
   float ucbc = 1.0f;  ///< c of the normalized bound
+  /// UCT's bound once intrinsic rewards are off (setIntrinsicEnabled(false)): "same" (--ucb),
+  /// "range" or "normalized" (with taskucbc).
+  std::string taskucb = "same";
+  float taskucbc = 1.0f;
 };
 
 /// True if --nstates bins some feature.

@@ -115,6 +115,8 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   bool realTime() const { return realTime_ != nullptr; }
 
  private:
+  /// Gives the UCT planner the bound of the current phase (--ucb exploring, --taskucb not).
+  void applyUcbBound();
   ExplorerSettings explorerSettings() const;
   /// A new, empty model of the configured type (sets exploration_, tabular_ and modelPtr_).
   std::unique_ptr<rl_common::MDPModel> makeModel();

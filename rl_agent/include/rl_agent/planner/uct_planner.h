@@ -133,6 +133,10 @@ class UctPlanner : public rl_common::Planner {
   /// is within 1e-4 of the best; a uniformly random action if `s` was never planned from.
   int bestAction(const rl_common::State& s) override;
 
+  /// Switches the UCB bound (and the Normalized bound's c) for the next rollouts, e.g. when the
+  /// agent moves from exploring to a task. Throws std::invalid_argument for c < 0 or not finite.
+  void setUcbBound(UcbBound bound, double c);
+
   /// Sets the last k actions taken (oldest first), the history of the root of the next
   /// plan() and bestAction() calls. Fewer than k actions: the missing oldest ones are "none"
   /// (an all-zero code). Throws std::invalid_argument for an action out of range or more than
