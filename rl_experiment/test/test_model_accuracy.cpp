@@ -126,3 +126,24 @@ TEST(ModelAccuracy, DetailedReportMatchesTheJointAndLocatesTheError) {
   // One feature: its marginal is the joint.
   EXPECT_NEAR(report.marginal[0], report.joint, 1e-12);
 }
+
+TEST(ModelAccuracy, GroupsSplitTheJointByFeatureValues) {
+  Chain chain;
+  rl_experiment::ModelAccuracy acc(chain, 2);
+  rl_common::Random rng(3);
+  const auto report = acc.evaluateDetailed(Stay(), rng, 20000, {0});
+  ASSERT_EQ(report.groups.size(), 5u);
+  int total = 0;
+  double sum = 0.0;
+  for (const auto& [name, g] : report.groups) {
+    total += g.second;
+    sum += g.first;
+    // "Stay" errs by 0.8 on action 0 in states 0..3 (half the samples): 0.4; state 4 is exact.
+    EXPECT_NEAR(g.first / g.second, name == "f0=4" ? 0.0 : 0.4, 0.03) << name;
+  }
+  EXPECT_EQ(total, 20000);
+  EXPECT_NEAR(sum / total, report.joint, 1e-9);
+  EXPECT_TRUE(report.groups.count("f0=2"));
+  rl_common::Random rng2(3);
+  EXPECT_THROW(acc.evaluateDetailed(Stay(), rng2, 10, {1}), std::invalid_argument);
+}

@@ -88,11 +88,19 @@ double ModelAccuracy::evaluate(const rl_common::ModelView& model, rl_common::Ran
 }
 
 ModelAccuracy::Report ModelAccuracy::evaluateDetailed(const rl_common::ModelView& model,
-                                                      rl_common::Random& rng, int samples) const {
+                                                      rl_common::Random& rng, int samples,
+                                                      const std::vector<int>& groupBy) const {
   if (samples < 1) {
     throw std::invalid_argument("ModelAccuracy::evaluateDetailed(): samples must be >= 1");
   }
   const std::size_t d = states_.front().size();
+  for (int f : groupBy) {
+    if (f < 0 || static_cast<std::size_t>(f) >= d) {
+      throw std::invalid_argument("ModelAccuracy::evaluateDetailed(): group feature " +
+                                  std::to_string(f) + " out of range (the state has " +
+                                  std::to_string(d) + " features)");
+    }
+  }
   Report r;
   r.marginal.assign(d, 0.0);
   std::vector<double> actionSum(static_cast<std::size_t>(numActions_), 0.0);
@@ -108,6 +116,19 @@ ModelAccuracy::Report ModelAccuracy::evaluateDetailed(const rl_common::ModelView
     actionSum[static_cast<std::size_t>(a)] += vd;
     ++actionCount[static_cast<std::size_t>(a)];
     for (std::size_t j = 0; j < d; ++j) r.marginal[j] += marginalDistance(truth, q, j);
+    if (!groupBy.empty()) {
+      std::string name;
+      for (int f : groupBy) {
+        if (!name.empty()) name += ' ';
+        const float value = s[static_cast<std::size_t>(f)];
+        const bool whole = value == static_cast<float>(static_cast<long>(value));
+        name += "f" + std::to_string(f) + "=" +
+                (whole ? std::to_string(static_cast<long>(value)) : std::to_string(value));
+      }
+      auto& g = r.groups[name];
+      g.first += vd;
+      ++g.second;
+    }
   }
   r.joint /= samples;
   for (double& m : r.marginal) m /= samples;

@@ -25,6 +25,7 @@ std::string join(const std::string& folder, const std::string& file) {
 std::string TrialLogger::stepsFile(int trial) { return numbered("steps", trial); }
 std::string TrialLogger::episodesFile(int trial) { return numbered("episodes", trial); }
 std::string TrialLogger::accuracyFile(int trial) { return numbered("accuracy", trial); }
+std::string TrialLogger::groupsFile(int trial) { return numbered("groups", trial); }
 std::string TrialLogger::summaryFile(int trial) { return numbered("trial", trial); }
 
 TrialLogger::TrialLogger(const std::string& folder, TrialInfo info, EvalSettings eval,
@@ -89,11 +90,17 @@ void TrialLogger::onCheckpoint(long stepsDone, Phase phase, const rl_common::Age
       for (std::size_t j = 0; j < d; ++j) header.push_back("marginal_f" + std::to_string(j));
       for (int a = 0; a < env.numActions(); ++a) header.push_back("action_" + std::to_string(a));
       accuracy_ = std::make_unique<CsvFile>(join(folder_, accuracyFile(info_.trial)), header);
+      if (!eval_.groupBy.empty()) {
+        groups_ =
+            std::make_unique<CsvFile>(join(folder_, groupsFile(info_.trial)),
+                                      std::vector<std::string>{"trial", "step", "phase", "group",
+                                                               "samples", "variational_distance"});
+      }
     }
   }
   if (!evaluator_) return;
   const ModelAccuracy::Report report =
-      evaluator_->evaluateDetailed(*model, evalRng_, eval_.samples);
+      evaluator_->evaluateDetailed(*model, evalRng_, eval_.samples, eval_.groupBy);
   lastAccuracy_ = report.joint;
   if (accuracy_) {
     std::vector<std::string> row{std::to_string(info_.trial), std::to_string(stepsDone),
@@ -102,6 +109,12 @@ void TrialLogger::onCheckpoint(long stepsDone, Phase phase, const rl_common::Age
     for (double m : report.marginal) row.push_back(formatNumber(m));
     for (double a : report.perAction) row.push_back(std::isnan(a) ? "" : formatNumber(a));
     accuracy_->row(row);
+  }
+  if (groups_) {
+    for (const auto& [name, g] : report.groups) {
+      groups_->row({std::to_string(info_.trial), std::to_string(stepsDone), phaseName(phase), name,
+                    std::to_string(g.second), formatNumber(g.first / g.second)});
+    }
   }
 }
 

@@ -60,6 +60,16 @@ void addExperimentOptions(rl_common::OptionParser& p, ExperimentConfig* c) {
           "measure the model's accuracy every this many steps (0: never)", atLeast(0));
   p.value("eval-samples", &c->evalSamples, "state-actions sampled per accuracy measurement",
           greaterThan(0));
+  p.value("eval-groups", &c->evalGroups,
+          "also measure the accuracy per group of states, grouped by the values of these "
+          "features (comma-separated indices, e.g. 4,2: LightWorld's room and have_key); "
+          "groups-NNN.csv",
+          rl_common::OptionParser::Check<std::vector<int>>([](const std::vector<int>& f) {
+            for (int i : f) {
+              if (i < 0) return std::string("feature indices must be >= 0");
+            }
+            return std::string();
+          }));
   p.value("out", &c->out, "folder for the logs (none: no files)");
   p.flag("force", &c->force, true, "overwrite the results in --out");
   p.flag("resume", &c->resume, true, "finish the unfinished trials in --out");
@@ -183,7 +193,7 @@ bool isRunnerFile(const std::string& name) {
   for (const char* exact : {"run.csv", "seeds.csv", "trials.csv"}) {
     if (name == exact) return true;
   }
-  for (const char* prefix : {"steps-", "episodes-", "accuracy-", "trial-"}) {
+  for (const char* prefix : {"steps-", "episodes-", "accuracy-", "groups-", "trial-"}) {
     if (name.rfind(prefix, 0) == 0 && name.size() > 4 &&
         name.compare(name.size() - 4, 4, ".csv") == 0) {
       return true;
@@ -366,8 +376,8 @@ std::vector<std::pair<std::string, std::string>> Experiment::runTrial(
   const TrialRunner runner(limits);
 
   TrialInfo info{trial, config_.label, ao.agent, eo.env, seeds.agent, seeds.env, seeds.eval};
-  TrialLogger logger(config_.out, info, EvalSettings{config_.evalSamples}, !env->isEpisodic(),
-                     original);
+  TrialLogger logger(config_.out, info, EvalSettings{config_.evalSamples, config_.evalGroups},
+                     !env->isEpisodic(), original);
   ProgressRelay relay(progress, runner.plannedSteps(env->isEpisodic()));
   Tee tee({&logger, &relay});
   const TrialSummary summary = runner.run(*env, *agent, &tee);

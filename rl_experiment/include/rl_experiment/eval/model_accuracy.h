@@ -22,6 +22,8 @@
  */
 #pragma once
 
+#include <map>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -66,9 +68,15 @@ class ModelAccuracy {
     double joint = 0.0;
     std::vector<double> marginal;   ///< one per state feature
     std::vector<double> perAction;  ///< one per action
+    /// Joint distance per group of the sampled states, grouped by the values of the features
+    /// given to evaluateDetailed() (e.g. LightWorld's room and have_key): the group's name
+    /// ("f4=1 f2=0"), then the sum of distances and the number of samples.
+    std::map<std::string, std::pair<double, int>> groups;
   };
-  Report evaluateDetailed(const rl_common::ModelView& model, rl_common::Random& rng,
-                          int samples) const;
+  /// `groupBy`: feature indices whose values group the samples (empty: no groups); throws
+  /// std::invalid_argument for an index out of range.
+  Report evaluateDetailed(const rl_common::ModelView& model, rl_common::Random& rng, int samples,
+                          const std::vector<int>& groupBy = {}) const;
 
   std::size_t numReachableStates() const { return states_.size(); }
 

@@ -10,6 +10,8 @@
  *                     action_0..action_(A-1)   (agents with a model, on environments with a
  *                                              true model: the joint distance, each feature's
  *                                              marginal, the joint per action)
+ *   groups-NNN.csv    trial,step,phase,group,samples,variational_distance   (with
+ *                     EvalSettings::groupBy: the joint distance per group of sampled states)
  *   trial-NNN.csv     the trial's summary (one header line, one row), written atomically at the
  *                     end: its presence marks the trial as finished.
  *
@@ -47,6 +49,8 @@ struct TrialInfo {
 /// Accuracy evaluation settings.
 struct EvalSettings {
   int samples = 5000;  ///< state-actions per evaluation
+  /// Features whose values group the samples (groups-NNN.csv); empty: no groups.
+  std::vector<int> groupBy;
 };
 
 class TrialLogger : public TrialObserver {
@@ -76,6 +80,7 @@ class TrialLogger : public TrialObserver {
   static std::string stepsFile(int trial);
   static std::string episodesFile(int trial);
   static std::string accuracyFile(int trial);
+  static std::string groupsFile(int trial);
   static std::string summaryFile(int trial);
 
  private:
@@ -84,7 +89,7 @@ class TrialLogger : public TrialObserver {
   EvalSettings eval_;
   bool perStepStream_;
   std::ostream* original_;
-  std::unique_ptr<CsvFile> steps_, episodes_, accuracy_;
+  std::unique_ptr<CsvFile> steps_, episodes_, accuracy_, groups_;
   Location pendingTarget_ = Location::kNone;
   LocationCounts locations_;
   rl_common::Random evalRng_;

@@ -48,6 +48,7 @@ struct ExperimentConfig {
   std::string taskRewards = "given";  ///< --task-rewards: given or learned
   int evalEvery = 25;                 ///< --eval-every (0: no accuracy evaluation)
   int evalSamples = 5000;             ///< --eval-samples
+  std::vector<int> evalGroups;        ///< --eval-groups: features grouping the samples
   std::string out;                    ///< --out folder ("" : no files)
   bool force = false;                 ///< --force
   bool resume = false;                ///< --resume
