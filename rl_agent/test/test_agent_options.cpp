@@ -190,6 +190,10 @@ TEST(AgentOptions, UctSearchOptionsDefaultToTheOriginal) {
   EXPECT_TRUE(o.bonusonce);
   EXPECT_EQ(o.taskucb, "range");
   EXPECT_NE(errorOf({"--agent", "texplore", "--depth", "0"}).find("--depth"), std::string::npos);
+  EXPECT_FLOAT_EQ(d.minprob, 0.0f);
+  EXPECT_FLOAT_EQ(parse({"--agent", "texplore", "--minprob", "0.1"}).minprob, 0.1f);
+  EXPECT_NE(errorOf({"--agent", "texplore", "--minprob", "2"}).find("--minprob"),
+            std::string::npos);
   EXPECT_NE(errorOf({"--agent", "texplore", "--ucb", "wide"}).find("normalized"),
             std::string::npos);
   EXPECT_NE(errorOf({"--agent", "texplore", "--ucbc", "-1"}).find("--ucbc"), std::string::npos);

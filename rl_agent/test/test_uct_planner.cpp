@@ -624,3 +624,50 @@ TEST(UctPlanner, SetUcbBoundSwitchesTheBoundForLaterRollouts) {
   EXPECT_GT(best, 4 * other);
   EXPECT_THROW(planner.setUcbBound(UctPlanner::UcbBound::Normalized, -0.1), std::invalid_argument);
 }
+
+TEST(UctPlanner, MinOutcomeProbabilityDropsImplausibleFeatureValues) {
+  // From 0 every action leads to 1 with probability 0.95 and to 5 with 0.05 (a value one tree
+  // of a forest predicts); every other state stays put. Without the cut, 200 rollouts meet
+  // state 5 (P(never) = 0.95^200 < 1e-4); with a cut of 0.1 they never do.
+  auto fn = [](const State& s, int) {
+    StateActionInfo info;
+    info.known = true;
+    if (s[0] == 0.0f) {
+      info.factored = {{{1.0f, 0.95}, {5.0f, 0.05}}};
+    } else {
+      info.factored = {{{s[0], 1.0}}};
+    }
+    return info;
+  };
+  for (double cut : {0.0, 0.1}) {
+    UctPlanner::Config c = config(2, 0.9, 5.0f);
+    c.maxDepth = 3;
+    c.minOutcomeProbability = cut;
+    UctPlanner planner(c, 23);
+    const auto model = view(fn);
+    planner.setModel(model);
+    planner.plan(State{0.0f}, PlanningBudget::ofRollouts(200));
+    bool metFive = false;
+    for (const auto& [input, action] : model->inputs()) metFive = metFive || input[0] == 5.0f;
+    EXPECT_EQ(metFive, cut == 0.0) << "cut " << cut;
+  }
+  // All values below the cut: the most likely one is taken.
+  auto flat = [](const State& s, int) {
+    StateActionInfo info;
+    info.known = true;
+    info.factored = {{{s[0] == 0.0f ? 2.0f : s[0], 0.6}, {3.0f, 0.4}}};
+    if (s[0] != 0.0f) info.factored = {{{s[0], 1.0}}};
+    return info;
+  };
+  UctPlanner::Config c = config(1, 0.9, 5.0f);
+  c.maxDepth = 2;
+  c.minOutcomeProbability = 0.9;
+  UctPlanner planner(c, 29);
+  const auto model = view(flat);
+  planner.setModel(model);
+  planner.plan(State{0.0f}, PlanningBudget::ofRollouts(50));
+  for (const auto& [input, action] : model->inputs()) EXPECT_NE(input[0], 3.0f);
+  UctPlanner::Config bad = config(1, 0.9, 5.0f);
+  bad.minOutcomeProbability = 1.5;
+  EXPECT_THROW(UctPlanner(bad, 1), std::invalid_argument);
+}

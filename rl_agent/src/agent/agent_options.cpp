@@ -75,6 +75,10 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
          "UCT: at a state met again on a rollout, try the actions not yet chosen there on that "
          "rollout (the original repeats its choice, so a self-loop holds the rollout to the "
          "depth cap)");
+  p.value("minprob", &o->minprob,
+          "UCT: rollouts sample a feature of a factored prediction only among values of at "
+          "least this probability (0: every value, as the original)",
+          inRange(0.0f, 1.0f));
   p.value("depth", &o->depth, "UCT: at most this many simulated actions per rollout",
           greaterThan(0));
   p.flag("bonusonce", &o->bonusonce, true,
@@ -167,14 +171,14 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
   for (const char* option :
        {"actrate",  "m",    "model",     "planner", "combo",    "nmodels", "reltrans",
         "abstrans", "v",    "n",         "history", "rollouts", "tau",     "pathvisits",
-        "ucb",      "ucbc", "bonusonce", "taskucb", "taskucbc", "depth"}) {
+        "ucb",      "ucbc", "bonusonce", "taskucb", "taskucbc", "depth",   "minprob"}) {
     requireAgent(p, o, option, kModelBased);
   }
   const bool modelBased = isOneOf(o.agent, kModelBased);
   if (modelBased) {
     const bool searchPlanner = o.planner != "vi" && o.planner != "pi" && o.planner != "sweeping";
     for (const char* option : {"actrate", "lambda", "history", "rollouts", "pathvisits", "ucb",
-                               "ucbc", "bonusonce", "taskucb", "taskucbc", "depth"}) {
+                               "ucbc", "bonusonce", "taskucb", "taskucbc", "depth", "minprob"}) {
       if (p.given(option) && !searchPlanner) {
         throw rl_common::OptionError(std::string("option --") + option +
                                      " needs a UCT planner (uct, parallel-uct, delayed-uct, "

@@ -68,6 +68,7 @@ UctPlanner::Config plannerConfig(const AgentOptions& o,
   c.ucbC = o.ucbc;
   c.bonusOncePerPath = o.bonusonce;
   c.maxDepth = o.depth;
+  c.minOutcomeProbability = o.minprob;
   return c;
 }
 

@@ -85,6 +85,9 @@ UctPlanner::UctPlanner(const Config& config, std::uint64_t seed) : config_(confi
   if (c.maxCachedPredictions < 1) {
     throw badConfig("maxCachedPredictions must be at least 1");
   }
+  if (!(c.minOutcomeProbability >= 0.0 && c.minOutcomeProbability <= 1.0)) {
+    throw badConfig("minOutcomeProbability must be in [0, 1]");
+  }
   if (!(c.ucbC >= 0.0) || !std::isfinite(c.ucbC)) {
     throw badConfig("ucbC must be finite and >= 0 (got " + std::to_string(c.ucbC) + ")");
   }
@@ -307,6 +310,8 @@ void UctPlanner::sampleSuccessor(const StateActionInfo& info) {
       float value = actual_[j];  // an empty distribution keeps the feature
       if (dist.size() == 1) {
         value = dist.front().first;
+      } else if (!dist.empty() && config_.minOutcomeProbability > 0.0) {
+        value = samplePlausible(dist);
       } else if (!dist.empty()) {
         double u = rng_.uniform();
         for (const auto& [v, p] : dist) {
@@ -364,6 +369,26 @@ void UctPlanner::sampleSuccessor(const StateActionInfo& info) {
   if (!inRange(next_)) {
     next_ = actual_;
   }
+}
+
+float UctPlanner::samplePlausible(const rl_common::FeatureDistribution& dist) {
+  const double cut = config_.minOutcomeProbability;
+  double total = 0.0;
+  const std::pair<float, double>* best = &dist.front();
+  for (const auto& entry : dist) {
+    if (entry.second >= cut) total += entry.second;
+    if (entry.second > best->second) best = &entry;
+  }
+  double u = rng_.uniform() * total;  // one draw, as without the cut
+  if (total <= 0.0) return best->first;
+  float value = best->first;
+  for (const auto& [v, p] : dist) {
+    if (p < cut) continue;
+    value = v;
+    u -= p;
+    if (u < 0.0) break;
+  }
+  return value;
 }
 
 bool UctPlanner::inRange(const State& s) const {

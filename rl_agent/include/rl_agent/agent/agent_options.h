@@ -44,7 +44,8 @@ struct AgentOptions {
   /// UCT: intrinsic bonus once per state-action per rollout (UctPlanner::Config::
   /// bonusOncePerPath).
   bool bonusonce = false;
-  int depth = 200;  ///< UCT's rollout depth cap (the original's MAX_DEPTH)
+  float minprob = 0.0f;  ///< UctPlanner::Config::minOutcomeProbability
+  int depth = 200;       ///< UCT's rollout depth cap (the original's MAX_DEPTH)
   /// UCT's bound (UctPlanner::UcbBound): "range" (the original's) or "normalized".
   std::string ucb = "range";
   float ucbc = 1.0f;  ///< c of the normalized bound

@@ -109,6 +109,13 @@ class UctPlanner : public rl_common::Planner {
     /// (PICKUP away from the key) is worth bonus/(1−γ), a hundred times a bonus elsewhere,
     /// and a search that follows its values sits on the self-loop. false: as the original.
     bool bonusOncePerPath = false;
+    /// Rollouts sample each feature of a factored prediction only among its values of at
+    /// least this probability (renormalised; the most likely value if none is). A forest that
+    /// is unsure puts a little mass on values one tree predicts, and sampling the 17 features
+    /// independently then produces imagined states that no tree predicts and that cannot
+    /// occur, which are novel and uncertain in turn; the variance bonus already pays for the
+    /// disagreement at the state-action itself. 0: sample every value (the original).
+    double minOutcomeProbability = 0.0;
     UcbBound ucbBound = UcbBound::Range;  ///< the original's bound by default
     double ucbC = 1.0;                    ///< c of the Normalized bound (≥ 0)
   };
@@ -221,6 +228,8 @@ class UctPlanner : public rl_common::Planner {
   void clearPath();
   void sampleSuccessor(const rl_common::StateActionInfo& info);
   bool inRange(const rl_common::State& s) const;
+  /// One value of `dist` among those of probability >= minOutcomeProbability.
+  float samplePlausible(const rl_common::FeatureDistribution& dist);
   void appendDiscretized(const rl_common::State& s, rl_common::State& out) const;
   void buildKey(const rl_common::State& actual, const std::vector<int>& history,
                 rl_common::State& key) const;
