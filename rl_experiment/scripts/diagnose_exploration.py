@@ -9,7 +9,10 @@ prints, per folder, as Markdown tables:
     the joint distance per action (which actions do);
   * the exploration steps by class (a move, or PICKUP/PRESS and where it was tried), with the
     variance and novelty bonuses the agent met on them;
-  * doors passed (exploration reward / 10) and PRESS on objects.
+  * doors passed (exploration reward / 10) and PRESS on objects;
+  * with the runner's --eval-groups, the joint distance per group of sampled states (e.g.
+    LightWorld's room, have_key and door_open: --eval-groups 4,2,3) and each group's share of
+    the samples, so that one sees which situations carry the error.
 
 Usage: diagnose_exploration.py [--step N] FOLDER [FOLDER ...]
 """
@@ -78,6 +81,33 @@ def accuracy_table(folder, step):
     return lines
 
 
+def group_table(folder, step):
+    by_group = collections.defaultdict(lambda: [0, 0.0, 0])  # samples, distance sum, trials
+    found = False
+    for path in sorted(glob.glob(os.path.join(folder, "groups-*.csv"))):
+        r = rows(path)
+        explore = [x for x in r if x["phase"] == "explore"]
+        at = (explore[-1]["step"] if explore else r[-1]["step"]) if step is None else str(step)
+        for x in r:
+            if x["step"] != at:
+                continue
+            found = True
+            g = by_group[x["group"]]
+            n = int(x["samples"])
+            g[0] += n
+            g[1] += n * float(x["variational_distance"])
+            g[2] += 1
+    if not found:
+        return []
+    total = sum(g[0] for g in by_group.values())
+    lines = ["| state group | share of samples | joint distance | share of the error |",
+             "|---|---|---|---|"]
+    error = sum(g[1] for g in by_group.values())
+    for name, (n, d, _) in sorted(by_group.items()):
+        lines.append("| %s | %.3f | %.3f | %.3f |" % (name, n / total, d / n, d / error))
+    return lines
+
+
 def class_table(folder):
     stats = collections.defaultdict(lambda: [0, 0.0, 0.0])
     trials = 0
@@ -128,6 +158,9 @@ def main(argv=None):
         print("## %s\n" % os.path.basename(os.path.normpath(folder)))
         print(summary_line(folder) + "\n")
         print("\n".join(accuracy_table(folder, args.step)) + "\n")
+        groups = group_table(folder, args.step)
+        if groups:
+            print("\n".join(groups) + "\n")
         print("\n".join(class_table(folder)) + "\n")
     return 0
 

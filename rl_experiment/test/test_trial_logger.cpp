@@ -59,13 +59,16 @@ TEST(TrialLogger, WritesStepsEpisodesAccuracyAndSummary) {
   // TEXPLORE-VANIR reports its intrinsic parts: some novelty while exploring, none in the task.
   double exploreNovelty = 0.0, taskIntrinsic = 0.0;
   for (std::size_t i = 1; i < steps.size(); ++i) {
-    ASSERT_EQ(steps[i].size(), 12u);
+    ASSERT_EQ(steps[i].size(), 14u);
     const double v = std::stod(steps[i][7]), n = std::stod(steps[i][8]);
     if (steps[i][2] == "explore") {
       exploreNovelty += n;
     } else {
       taskIntrinsic += v + n;
     }
+    // The planner's value of the chosen action and the spread of its values at the state.
+    ASSERT_FALSE(steps[i][12].empty()) << "step " << i;
+    EXPECT_GE(std::stod(steps[i][13]), 0.0) << "step " << i;
     const int action = std::stoi(steps[i][4]);
     // PRESS (5) and PICKUP (4) carry where they were tried; moves carry nothing.
     EXPECT_EQ(steps[i][10].empty(), action < 4) << "step " << i;

@@ -327,6 +327,12 @@ int ModelBasedAgent::chooseAction(const rl_common::State& raw) {
   // What the model predicts the chosen action earns, part by part.
   const auto info = currentView()->query(input, action);
   lastBreakdown_ = {info.varianceReward, info.noveltyReward, info.otherReward};
+  const std::vector<double> q = plannerValues(s);
+  if (static_cast<int>(q.size()) == task_.numActions) {
+    lastBreakdown_.plannedValue = q[static_cast<std::size_t>(action)];
+    const auto [lo, hi] = std::minmax_element(q.begin(), q.end());
+    lastBreakdown_.valueSpread = *hi - *lo;
+  }
   lastInput_ = input;
   lastAction_ = action;
   if (options_.history > 0) {

@@ -40,8 +40,8 @@ TrialLogger::TrialLogger(const std::string& folder, TrialInfo info, EvalSettings
   steps_ = std::make_unique<CsvFile>(
       join(folder_, stepsFile(info_.trial)),
       std::vector<std::string>{"trial", "step", "phase", "episode", "action", "reward",
-                               "reward_seen", "variance", "novelty", "other", "target",
-                               "terminal"});
+                               "reward_seen", "variance", "novelty", "other", "target", "terminal",
+                               "planned_q", "q_spread"});
   episodes_ = std::make_unique<CsvFile>(
       join(folder_, episodesFile(info_.trial)),
       std::vector<std::string>{"trial", "episode", "phase", "steps", "reward", "terminal"});
@@ -52,6 +52,10 @@ void TrialLogger::beforeStep(const rl_common::Environment& env, long /*step*/, i
   locations_.add(env, action);
 }
 
+namespace {
+std::string value(double x) { return std::isnan(x) ? std::string() : formatNumber(x); }
+}  // namespace
+
 void TrialLogger::onStep(const StepRecord& r) {
   if (steps_) {
     const std::string t = std::to_string(info_.trial);
@@ -60,7 +64,8 @@ void TrialLogger::onStep(const StepRecord& r) {
                  r.hasBreakdown ? formatNumber(r.variance) : "",
                  r.hasBreakdown ? formatNumber(r.novelty) : "",
                  r.hasBreakdown ? formatNumber(r.other) : "", locationName(pendingTarget_),
-                 r.terminal ? "1" : "0"});
+                 r.terminal ? "1" : "0", r.hasBreakdown ? value(r.plannedValue) : "",
+                 r.hasBreakdown ? value(r.valueSpread) : ""});
   }
   pendingTarget_ = Location::kNone;
   if (original_ != nullptr && perStepStream_) *original_ << r.reward << "\n";

@@ -42,6 +42,8 @@ void addBreakdown(const rl_common::Agent& agent, StepRecord* rec) {
     rec->variance = b->variance;
     rec->novelty = b->novelty;
     rec->other = b->other;
+    rec->plannedValue = b->plannedValue;
+    rec->valueSpread = b->valueSpread;
   }
 }
 

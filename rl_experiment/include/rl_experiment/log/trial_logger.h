@@ -3,8 +3,10 @@
  * when it ends. Files (NNN = the trial number, zero-padded):
  *
  *   steps-NNN.csv     trial,step,phase,episode,action,reward,reward_seen,variance,novelty,other,
- *                     target,terminal          (one line per step; target: where PRESS/PICKUP
- *                                              was tried, LightWorld only)
+ *                     target,terminal,planned_q,q_spread   (one line per step; target: where
+ *                                              PRESS/PICKUP was tried, LightWorld only;
+ *                                              planned_q: the planner's Q of the chosen action,
+ *                                              q_spread: max - min Q at the state)
  *   episodes-NNN.csv  trial,episode,phase,steps,reward,terminal
  *   accuracy-NNN.csv  trial,step,phase,variational_distance,samples,marginal_f0..f(d-1),
  *                     action_0..action_(A-1)   (agents with a model, on environments with a

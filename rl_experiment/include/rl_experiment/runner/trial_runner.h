@@ -64,6 +64,8 @@ struct StepRecord {
   float variance = 0.0f;      ///< intrinsic parts the agent predicted for this action
   float novelty = 0.0f;
   float other = 0.0f;
+  double plannedValue = 0.0;  ///< the planner's Q of the chosen action (NaN: none)
+  double valueSpread = 0.0;   ///< max − min of the planner's Q at the state (NaN: none)
 };
 
 struct EpisodeRecord {
