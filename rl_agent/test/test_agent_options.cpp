@@ -191,6 +191,11 @@ TEST(AgentOptions, UctSearchOptionsDefaultToTheOriginal) {
   EXPECT_EQ(o.taskucb, "range");
   EXPECT_NE(errorOf({"--agent", "texplore", "--depth", "0"}).find("--depth"), std::string::npos);
   EXPECT_FLOAT_EQ(d.minprob, 0.0f);
+  EXPECT_EQ(d.novelty, "stateaction");
+  EXPECT_EQ(parse({"--agent", "texplore", "--v", "1", "--n", "3", "--novelty", "state"}).novelty,
+            "state");
+  EXPECT_NE(errorOf({"--agent", "texplore", "--novelty", "state"}).find("variancenovelty"),
+            std::string::npos);
   EXPECT_FLOAT_EQ(parse({"--agent", "texplore", "--minprob", "0.1"}).minprob, 0.1f);
   EXPECT_NE(errorOf({"--agent", "texplore", "--minprob", "2"}).find("--minprob"),
             std::string::npos);

@@ -187,3 +187,18 @@ TEST(ExplorationModel, UnknownRewardIsOptimisticUntilMVisits) {
   EXPECT_LT(info.reward, 1.0f);
   EXPECT_FLOAT_EQ(info.otherReward, 0.0f);
 }
+
+TEST(ExplorationModel, StateNoveltyIgnoresWhichActionWasTaken) {
+  // Action 1 was taken at 1. Per state-action (the original), action 2 was never taken, so its
+  // novelty is 1 everywhere (bonus 3); per state, state 1 is known (0) and state 3 is
+  // |3 − 1| / 5 away (bonus 3 · 0.4).
+  for (bool perState : {false, true}) {
+    ExplorationModel model(corridorConfig(3), 6,
+                           {std::make_shared<rl_agent::NoveltyReward>(3.0, perState)});
+    model.update({corridor(1, 1)});
+    const auto view = model.view();
+    EXPECT_NEAR(view->query({1.0f}, 2).noveltyReward, perState ? 0.0 : 3.0, 1e-5) << perState;
+    EXPECT_NEAR(view->query({3.0f}, 2).noveltyReward, perState ? 1.2 : 3.0, 1e-5) << perState;
+    EXPECT_NEAR(view->query({3.0f}, 1).noveltyReward, 1.2, 1e-5) << perState;
+  }
+}

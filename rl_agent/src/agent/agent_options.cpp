@@ -60,6 +60,9 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
   p.flag("abstrans", &o->reltrans, false, "predict absolute next states s'");
   p.value("v|b", &o->v, "VANIR variance (tree disagreement) reward coefficient", atLeast(0.0f));
   p.value("n", &o->n, "VANIR novelty reward coefficient", atLeast(0.0f));
+  p.choice("novelty", &o->novelty, {"stateaction", "state"},
+           "VANIR's novelty: of (s, a) against the states where a was taken (stateaction, the "
+           "original), or of s against the states where any action was taken (state)");
   p.value("history", &o->history, "action-history length", atLeast(0));
   p.value("nstates", &o->nstates,
           "bins per feature: one count for every feature, or one per feature, comma-separated "
@@ -169,9 +172,10 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
   lambdaAgents.push_back("sarsa");
   requireAgent(p, o, "lambda", lambdaAgents);
   for (const char* option :
-       {"actrate",  "m",    "model",     "planner", "combo",    "nmodels", "reltrans",
-        "abstrans", "v",    "n",         "history", "rollouts", "tau",     "pathvisits",
-        "ucb",      "ucbc", "bonusonce", "taskucb", "taskucbc", "depth",   "minprob"}) {
+       {"actrate",  "m",          "model",   "planner", "combo",     "nmodels",
+        "reltrans", "abstrans",   "v",       "n",       "history",   "rollouts",
+        "tau",      "pathvisits", "ucb",     "ucbc",    "bonusonce", "taskucb",
+        "taskucbc", "depth",      "minprob", "novelty"}) {
     requireAgent(p, o, option, kModelBased);
   }
   const bool modelBased = isOneOf(o.agent, kModelBased);
@@ -216,6 +220,9 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
     }
     if (o.agent == "rmax" && o.explore != "unknown") {
       throw rl_common::OptionError("--agent rmax needs --explore unknown");
+    }
+    if (p.given("novelty") && o.explore != "variancenovelty") {
+      throw rl_common::OptionError("option --novelty needs --explore variancenovelty");
     }
     if (p.given("n") && o.explore != "variancenovelty" && o.explore != "unvisitedstates" &&
         o.explore != "unvisitedactions") {

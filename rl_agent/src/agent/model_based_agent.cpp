@@ -101,6 +101,7 @@ ExplorerSettings ModelBasedAgent::explorerSettings() const {
   ExplorerSettings settings;
   settings.v = options_.v;
   settings.n = options_.n;
+  settings.stateNovelty = options_.novelty == "state";
   settings.m = options_.m;
   settings.tau = options_.tau;
   settings.featMin = task_.minFeatures;

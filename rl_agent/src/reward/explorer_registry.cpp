@@ -32,7 +32,7 @@ ExplorerRegistry build() {
       [](const ExplorerSettings& s) {
         auto e = std::make_unique<Explorer>();
         if (s.v != 0.0f) e->rewards.push_back(std::make_shared<VarianceReward>(s.v));
-        if (s.n != 0.0f) e->rewards.push_back(std::make_shared<NoveltyReward>(s.n));
+        if (s.n != 0.0f) e->rewards.push_back(std::make_shared<NoveltyReward>(s.n, s.stateNovelty));
         return e;
       },
       "TEXPLORE-VANIR: v * variance + n * novelty");

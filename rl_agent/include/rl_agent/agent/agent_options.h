@@ -26,11 +26,12 @@ struct AgentOptions {
   std::string explore = "greedy";  ///< exploration type
   std::string combo = "best";      ///< forest combination
   std::string planner = "parallel-uct";
-  int nmodels = 1;       ///< trees per forest
-  bool reltrans = true;  ///< predict relative changes (--reltrans / --abstrans)
-  float v = 0.0f;        ///< VANIR variance coefficient (--v, --b)
-  float n = 0.0f;        ///< VANIR novelty coefficient (--n)
-  int history = 0;       ///< action-history length
+  int nmodels = 1;                      ///< trees per forest
+  bool reltrans = true;                 ///< predict relative changes (--reltrans / --abstrans)
+  float v = 0.0f;                       ///< VANIR variance coefficient (--v, --b)
+  float n = 0.0f;                       ///< VANIR novelty coefficient (--n)
+  std::string novelty = "stateaction";  ///< VANIR novelty: "stateaction" (original) or "state"
+  int history = 0;                      ///< action-history length
   /// Bins per feature (--nstates): one count for every feature, as the original's option, or
   /// one per feature (a feature with 0 is not binned); {0}: no discretisation.
   std::vector<int> nstates{0};

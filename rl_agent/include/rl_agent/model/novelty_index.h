@@ -41,6 +41,8 @@ class NoveltyIndex {
     bool stateVisited(const rl_common::State& s) const;
     /// Number of states added with `action`.
     std::size_t size(int action) const;
+    /// Number of actions.
+    int numActions() const { return static_cast<int>(actions_.size()); }
 
    private:
     friend class NoveltyIndex;

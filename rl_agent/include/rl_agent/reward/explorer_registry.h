@@ -29,8 +29,11 @@
 namespace rl_agent {
 
 struct ExplorerSettings {
-  float v = 0.0f;     ///< variance coefficient (and the competence / prederror weight)
-  float n = 0.0f;     ///< novelty / unvisited bonus
+  float v = 0.0f;  ///< variance coefficient (and the competence / prederror weight)
+  float n = 0.0f;  ///< novelty / unvisited bonus
+  /// VANIR's novelty of (s, a) against the states where a was taken (false, the original), or
+  /// of s against the states where any action was taken (true).
+  bool stateNovelty = false;
   int m = 5;          ///< visits before a state-action is known
   float rmax = 1.0f;  ///< optimistic value for unknown state-actions
   float tau = 0.2f;   ///< Boltzmann temperature
