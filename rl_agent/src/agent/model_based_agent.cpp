@@ -313,12 +313,13 @@ int ModelBasedAgent::chooseAction(const rl_common::State& raw) {
     action = planner_->bestAction(s);
   }
   lastPlanSeconds_ = std::chrono::duration<double>(Clock::now() - planStart).count();
+  // The planner's values at s, read once: for Boltzmann choice and the step's breakdown.
+  const std::vector<double> q = plannerValues(s);
   if (!exploring_) {
     // The planner's greedy action.
   } else if (randomActions_) {
     action = rng_.uniformInt(0, task_.numActions - 1);
   } else if (boltzmann_) {
-    const std::vector<double> q = plannerValues(s);
     if (static_cast<int>(q.size()) == task_.numActions) {
       action = BoltzmannSelector::sample(q, tau_, rng_);
     }
@@ -328,7 +329,6 @@ int ModelBasedAgent::chooseAction(const rl_common::State& raw) {
   // What the model predicts the chosen action earns, part by part.
   const auto info = currentView()->query(input, action);
   lastBreakdown_ = {info.varianceReward, info.noveltyReward, info.otherReward};
-  const std::vector<double> q = plannerValues(s);
   if (static_cast<int>(q.size()) == task_.numActions) {
     lastBreakdown_.plannedValue = q[static_cast<std::size_t>(action)];
     const auto [lo, hi] = std::minmax_element(q.begin(), q.end());

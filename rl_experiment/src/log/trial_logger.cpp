@@ -112,7 +112,7 @@ void TrialLogger::onCheckpoint(long stepsDone, Phase phase, const rl_common::Age
                                  phaseName(phase), formatNumber(report.joint),
                                  std::to_string(eval_.samples)};
     for (double m : report.marginal) row.push_back(formatNumber(m));
-    for (double a : report.perAction) row.push_back(std::isnan(a) ? "" : formatNumber(a));
+    for (double a : report.perAction) row.push_back(value(a));
     accuracy_->row(row);
   }
   if (groups_) {
