@@ -46,7 +46,8 @@ TEST(TrialLogger, WritesStepsEpisodesAccuracyAndSummary) {
   limits.checkpointEvery = 25;
   std::ostringstream original;
   rl_experiment::TrialInfo info{4, "vanir", "texplore", "lightworld", 5, 3, 9};
-  rl_experiment::TrialLogger logger(dir, info, rl_experiment::EvalSettings{200}, true, &original);
+  rl_experiment::TrialLogger logger(dir, info, rl_experiment::EvalSettings{200, {}}, true,
+                                    &original);
   const auto summary = rl_experiment::TrialRunner(limits).run(env, *agent, &logger);
   const auto row = logger.finish(summary, 1.5, 2048);
 

@@ -60,6 +60,7 @@ EnvironmentNode::EnvironmentNode(ros::NodeHandle nh, Factory factory, std::uint6
 void EnvironmentNode::sendSeeds(const ros::SingleSubscriberPublisher& pub) {
   const auto seeds = env_->seedExperiences();
   for (const auto& e : seeds) pub.publish(toMessage(e));
+  seedsSent_ = true;
   ROS_INFO_STREAM_NAMED(
       "env", "sent " << seeds.size() << " seed experiences to " << pub.getSubscriberName());
 }
@@ -67,8 +68,10 @@ void EnvironmentNode::sendSeeds(const ros::SingleSubscriberPublisher& pub) {
 void EnvironmentNode::publishFirstStateWhenReady() {
   if (firstStateSent_) return;
   // An agent listens on all three topics before it can act; the seeds go out on connection.
+  // roscpp counts a subscriber before it runs the connect callback (queued on this node's
+  // spinner, behind this timer), so wait for the seeds to have been sent, not only counted.
   if (statePub_.getNumSubscribers() == 0 || seedPub_.getNumSubscribers() == 0 ||
-      descriptionPub_.getNumSubscribers() == 0) {
+      descriptionPub_.getNumSubscribers() == 0 || !seedsSent_) {
     return;
   }
   firstStateSent_ = true;

@@ -60,6 +60,7 @@ class EnvironmentNode {
   std::unique_ptr<rl_common::Environment> env_;
   bool prints_;
   bool firstStateSent_ = false;
+  bool seedsSent_ = false;  // the connect callback has sent the seeds to an agent
   long steps_ = 0;
   ros::Publisher descriptionPub_, seedPub_, statePub_;
   ros::Subscriber actionSub_, infoSub_;
