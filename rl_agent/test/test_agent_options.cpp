@@ -207,3 +207,24 @@ TEST(AgentOptions, UctSearchOptionsDefaultToTheOriginal) {
   EXPECT_NE(errorOf({"--agent", "rmax", "--ucb", "normalized"}).find("UCT planner"),
             std::string::npos);
 }
+
+TEST(AgentOptions, TaskPlannerOptions) {
+  const AgentOptions d;
+  EXPECT_EQ(d.taskplanner, "same");  // the original: the task phase plans as exploration did
+  EXPECT_TRUE(d.taskkey.empty());
+  AgentOptions o = parse({"--agent", "texplore", "--taskplanner", "vi", "--taskkey", "0,1,4",
+                          "--taskdepth", "30", "--taskminprob", "0.05"});
+  EXPECT_EQ(o.taskplanner, "vi");
+  EXPECT_EQ(o.taskkey, (std::vector<int>{0, 1, 4}));
+  EXPECT_EQ(o.taskdepth, 30);
+  EXPECT_FLOAT_EQ(o.taskminprob, 0.05f);
+  EXPECT_NE(errorOf({"--agent", "texplore", "--taskplanner", "uct"}).find("same, vi"),
+            std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "texplore", "--taskkey", "0,1"}).find("--taskplanner vi"),
+            std::string::npos);
+  EXPECT_NE(
+      errorOf({"--agent", "texplore", "--taskplanner", "vi", "--history", "2"}).find("--history"),
+      std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "qlearner", "--taskplanner", "vi"}).find("--taskplanner"),
+            std::string::npos);
+}

@@ -94,3 +94,69 @@ TEST(StateSpacePlanner, UnknownStateGivesRandomActionAndNoModelThrows) {
   EXPECT_TRUE(a == 0 || a == 1);
   EXPECT_TRUE(vi.qValues(State{42}).empty());
 }
+
+TEST(StateSpacePlanner, SuccessorsOutsideTheRangesStayPut) {
+  // A: a0 reaches B or an out-of-range state {9} (p 0.5 each); a1 stays. B pays 1 forever.
+  // {9} is not real (the model is never asked about it): its half stays in A, so
+  // V(A) = 0.9 (0.5 V(A) + 0.5 V(B)), V(B) = 10, V(A) = 4.5 / 0.55.
+  auto m = std::make_shared<test_mdps::TableModelView>();
+  m->set(State{0}, 0, {{State{9}, 0.5}, {State{1}, 0.5}}, 0.0f);
+  m->set(State{0}, 1, {{State{0}, 1.0}}, 0.0f);
+  m->set(State{1}, 0, {{State{1}, 1.0}}, 1.0f);
+  m->set(State{1}, 1, {{State{1}, 1.0}}, 1.0f);
+  auto c = config();
+  c.featMin = {0.0f};
+  c.featMax = {2.0f};
+  ValueIteration vi(c, 1);
+  vi.setModel(m);
+  vi.plan(State{0}, rl_common::PlanningBudget{});
+  EXPECT_EQ(vi.numStates(), 2u);
+  EXPECT_NEAR(vi.value(State{1}), 10.0, 1e-5);
+  EXPECT_NEAR(vi.value(State{0}), 4.5 / 0.55, 1e-5);
+  c.featMax = {1.0f, 2.0f};
+  EXPECT_THROW(ValueIteration(c, 1), std::invalid_argument);
+}
+
+TEST(StateSpacePlanner, KeyFeaturesShareOneEntryQueriedAtItsRepresentative) {
+  // States (x, noise); only x tells table states apart. The model knows only the states it
+  // is asked about: (0,0), and (1,7), the first state met with x = 1, whose a0 leads to
+  // (1,3): the same entry, so a self-loop paying 1 (V = 10).
+  auto m = std::make_shared<test_mdps::TableModelView>();
+  m->set(State{0, 0}, 0, {{State{1, 7}, 1.0}}, 0.0f);
+  m->set(State{0, 0}, 1, {{State{0, 0}, 1.0}}, 0.0f);
+  m->set(State{1, 7}, 0, {{State{1, 3}, 1.0}}, 1.0f);
+  m->set(State{1, 7}, 1, {{State{0, 5}, 1.0}}, 0.0f);
+  auto c = config();
+  c.keyFeatures = {0};
+  ValueIteration vi(c, 1);
+  vi.setModel(m);
+  vi.plan(State{0, 0}, rl_common::PlanningBudget{});
+  EXPECT_EQ(vi.numStates(), 2u);
+  EXPECT_NEAR(vi.value(State{1, 99}), 10.0, 1e-5);  // looked up by x alone
+  EXPECT_NEAR(vi.value(State{0, 0}), 9.0, 1e-5);
+  EXPECT_EQ(vi.bestAction(State{0, 42}), 0);
+  // A root is its own representative: planning from (1,3) re-queries x = 1 there.
+  m->set(State{1, 3}, 0, {{State{1, 3}, 1.0}}, 2.0f);
+  m->set(State{1, 3}, 1, {{State{0, 0}, 1.0}}, 0.0f);
+  vi.plan(State{1, 3}, rl_common::PlanningBudget{});
+  EXPECT_NEAR(vi.value(State{1, 7}), 20.0, 1e-5);
+  EXPECT_EQ(vi.expandedStates(), (std::vector<State>{State{0}, State{1}}));
+  c.keyFeatures = {2};
+  ValueIteration bad(c, 1);
+  bad.setModel(m);
+  EXPECT_THROW(bad.plan(State{0, 0}, rl_common::PlanningBudget{}), std::invalid_argument);
+}
+
+TEST(ValueIteration, WarmStartFromAnotherTableConvergesInFewerSweeps) {
+  ValueIteration cold(config(), 1);
+  cold.setModel(test_mdps::chainModel());
+  cold.plan(State{0}, rl_common::PlanningBudget{});
+  ValueIteration warm(config(), 1);
+  warm.warmStartFrom(&cold);
+  warm.setModel(test_mdps::chainModel());
+  warm.plan(State{0}, rl_common::PlanningBudget{});
+  EXPECT_NEAR(warm.value(State{0}), cold.value(State{0}), 1e-6);
+  EXPECT_NEAR(warm.value(State{1}), 10.0, 1e-5);
+  EXPECT_GT(cold.lastSweeps(), 50);
+  EXPECT_LE(warm.lastSweeps(), 2);  // one sweep confirms the values it was given
+}

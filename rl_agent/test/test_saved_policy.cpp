@@ -79,7 +79,9 @@ TEST(SavedPolicy, RoundTripsALearnedPolicy) {
     const int best = int(std::max_element(q.begin(), q.end()) - q.begin());
     int ties = 0;
     for (float v : q) ties += v >= q[best] - 1e-4f;
-    if (ties == 1) EXPECT_EQ(replay->firstAction(s), best);
+    if (ties == 1) {
+      EXPECT_EQ(replay->firstAction(s), best);
+    }
   }
   // The replayed policy walks the shortest path.
   EXPECT_EQ(test_mdps::runEpisode(*replay, env, 100), 10);

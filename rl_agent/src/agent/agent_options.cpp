@@ -94,6 +94,18 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
   p.choice("taskucb", &o->taskucb, {"same", "range", "normalized"},
            "UCT's bound once intrinsic rewards are switched off (a task phase); same: --ucb");
   p.value("taskucbc", &o->taskucbc, "UCT: c of --taskucb normalized", atLeast(0.0f));
+  p.choice("taskplanner", &o->taskplanner, {"same", "vi"},
+           "the planner once intrinsic rewards are switched off (a task phase); same: --planner; "
+           "vi: value iteration over the states the learned model reaches from the visited ones");
+  p.value("taskdepth", &o->taskdepth,
+          "--taskplanner vi: model steps expanded from the current state", greaterThan(0));
+  p.value("taskminprob", &o->taskminprob,
+          "--taskplanner vi: the learned model's joint outcomes below this probability are not "
+          "planned through (lower plans better and slower)",
+          inRange(0.0f, 0.999f));
+  p.value("taskkey", &o->taskkey,
+          "--taskplanner vi: features (0-based, comma-separated) that tell the planner's states "
+          "apart; states equal on them share a value (default: all features)");
   p.value("rollouts", &o->rollouts,
           "UCT rollouts per step, planned synchronously for reproducible runs (0: plan in real "
           "time at --actrate)",
@@ -172,10 +184,10 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
   lambdaAgents.push_back("sarsa");
   requireAgent(p, o, "lambda", lambdaAgents);
   for (const char* option :
-       {"actrate",  "m",          "model",   "planner", "combo",     "nmodels",
-        "reltrans", "abstrans",   "v",       "n",       "history",   "rollouts",
-        "tau",      "pathvisits", "ucb",     "ucbc",    "bonusonce", "taskucb",
-        "taskucbc", "depth",      "minprob", "novelty"}) {
+       {"actrate",  "m",           "model",     "planner", "combo",      "nmodels", "reltrans",
+        "abstrans", "v",           "n",         "history", "rollouts",   "tau",     "pathvisits",
+        "ucb",      "ucbc",        "bonusonce", "taskucb", "taskucbc",   "depth",   "minprob",
+        "novelty",  "taskplanner", "taskdepth", "taskkey", "taskminprob"}) {
     requireAgent(p, o, option, kModelBased);
   }
   const bool modelBased = isOneOf(o.agent, kModelBased);
@@ -188,6 +200,16 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
                                      " needs a UCT planner (uct, parallel-uct, delayed-uct, "
                                      "delayed-parallel-uct), not '" +
                                      o.planner + "'");
+      }
+    }
+    if (o.taskplanner == "vi" && o.history > 0) {
+      throw rl_common::OptionError(
+          "option --taskplanner vi does not take --history (value "
+          "iteration plans on states alone)");
+    }
+    for (const char* option : {"taskdepth", "taskkey", "taskminprob"}) {
+      if (p.given(option) && o.taskplanner != "vi") {
+        throw rl_common::OptionError(std::string("option --") + option + " needs --taskplanner vi");
       }
     }
     if (p.given("epsilon") && o.explore != "epsilongreedy") {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <deque>
 #include <stdexcept>
+#include <string>
 
 namespace rl_agent {
 
@@ -15,19 +16,30 @@ StateSpacePlanner::StateSpacePlanner(const Config& config, std::uint64_t seed)
     throw std::invalid_argument("StateSpacePlanner::StateSpacePlanner(): gamma must be in [0, 1)");
   }
   if (!(config.tolerance > 0.0) || config.maxSteps < 0 || config.maxStates < 1 ||
-      config.maxIterations < 1) {
+      config.maxIterations < 1 ||
+      !(config.minTransitionProbability >= 0.0 && config.minTransitionProbability < 1.0)) {
     throw std::invalid_argument(
         "StateSpacePlanner::StateSpacePlanner(): need tolerance > 0, maxSteps >= 0, "
-        "maxStates >= 1 and maxIterations >= 1");
+        "maxStates >= 1, maxIterations >= 1 and minTransitionProbability in [0, 1)");
+  }
+  if (config.featMin.size() != config.featMax.size()) {
+    throw std::invalid_argument(
+        "StateSpacePlanner::StateSpacePlanner(): featMin and featMax must have the same size");
   }
   const auto& bins = config.statesPerDim;
-  if (!bins.empty() && (config.featMin.empty() || config.featMin.size() != config.featMax.size() ||
-                        (bins.size() != 1 && bins.size() != config.featMin.size()))) {
+  if (!bins.empty() &&
+      (config.featMin.empty() || (bins.size() != 1 && bins.size() != config.featMin.size()))) {
     throw std::invalid_argument(
         "StateSpacePlanner::StateSpacePlanner(): statesPerDim needs the feature ranges and "
         "one entry, or one per feature");
   }
   grid_ = StateGrid(bins, config.featMin, config.featMax);
+  for (int f : config.keyFeatures) {
+    if (f < 0 || (!config.featMin.empty() && f >= static_cast<int>(config.featMin.size()))) {
+      throw std::invalid_argument("StateSpacePlanner::StateSpacePlanner(): key feature " +
+                                  std::to_string(f) + " out of range");
+    }
+  }
 }
 
 rl_common::State StateSpacePlanner::binned(const rl_common::State& s) const {
@@ -40,26 +52,65 @@ void StateSpacePlanner::setModel(std::shared_ptr<const rl_common::ModelView> mod
   ++version_;
 }
 
+rl_common::State StateSpacePlanner::keyOf(const rl_common::State& s) const {
+  if (config_.keyFeatures.empty()) return s;
+  rl_common::State key;
+  key.reserve(config_.keyFeatures.size());
+  for (int f : config_.keyFeatures) {
+    if (static_cast<std::size_t>(f) >= s.size()) {
+      throw std::invalid_argument("StateSpacePlanner: key feature " + std::to_string(f) +
+                                  " of a state with " + std::to_string(s.size()) + " features");
+    }
+    key.push_back(s[static_cast<std::size_t>(f)]);
+  }
+  return key;
+}
+
 int StateSpacePlanner::indexOf(const rl_common::State& raw) {
   const rl_common::State s = binned(raw);
-  const auto it = index_.find(s);
+  rl_common::State key = keyOf(s);
+  const auto it = index_.find(key);
   if (it != index_.end()) return it->second;
   if (states_.size() >= config_.maxStates) return -1;
   const int i = static_cast<int>(states_.size());
   Node n;
-  n.key = s;
+  n.key = key;
+  n.rep = s;
   n.q.assign(static_cast<std::size_t>(config_.numActions), 0.0);
+  if (warm_ != nullptr) {
+    const auto w = warm_->index_.find(key);
+    if (w != warm_->index_.end() &&
+        warm_->states_[static_cast<std::size_t>(w->second)].q.size() == n.q.size()) {
+      n.q = warm_->states_[static_cast<std::size_t>(w->second)].q;
+    }
+  }
   n.depth = config_.maxSteps + 1;
   states_.push_back(std::move(n));
   isRoot_.push_back(0);
-  index_.emplace(s, i);
+  index_.emplace(std::move(key), i);
   return i;
+}
+
+bool StateSpacePlanner::inRange(const rl_common::State& s) const {
+  constexpr float kEps = 1e-5f;  // as UctPlanner::Config::rangeEpsilon
+  const std::size_t n = std::min(s.size(), config_.featMin.size());
+  for (std::size_t j = 0; j < n; ++j) {
+    if (!(s[j] >= config_.featMin[j] - kEps && s[j] <= config_.featMax[j] + kEps)) return false;
+  }
+  return true;
 }
 
 void StateSpacePlanner::addStates(const std::vector<rl_common::State>& states) {
   for (const auto& s : states) {
     const int i = indexOf(s);
-    if (i < 0 || isRoot_[static_cast<std::size_t>(i)]) continue;
+    if (i < 0) continue;
+    Node& n = states_[static_cast<std::size_t>(i)];
+    if (!config_.keyFeatures.empty() && n.rep != binned(s)) {
+      n.rep = binned(s);  // a root is its own representative
+      n.expanded = false;
+      newRoots_ = true;
+    }
+    if (isRoot_[static_cast<std::size_t>(i)]) continue;
     isRoot_[static_cast<std::size_t>(i)] = 1;
     roots_.push_back(i);
     newRoots_ = true;
@@ -88,16 +139,23 @@ std::vector<int> StateSpacePlanner::refresh() {
     if (!states_[static_cast<std::size_t>(i)].expanded) {
       std::vector<std::vector<Successor>> next(A);
       std::vector<double> reward(A), cont(A);
-      const rl_common::State key = states_[static_cast<std::size_t>(i)].key;
+      const rl_common::State rep = states_[static_cast<std::size_t>(i)].rep;
       for (std::size_t a = 0; a < A; ++a) {
-        const auto info = model_->query(key, static_cast<int>(a));
+        const auto info = model_->query(rep, static_cast<int>(a));
         reward[a] = info.reward;
         cont[a] = 1.0 - std::clamp(static_cast<double>(info.termProb), 0.0, 1.0);
-        for (const auto& [s2, p] : rl_common::expandTransitions(info)) {
+        double stay = 0.0;  // mass of successors outside the feature ranges
+        for (const auto& [s2, p] :
+             rl_common::expandTransitions(info, config_.minTransitionProbability)) {
           if (p <= 0.0) continue;
+          if (!inRange(s2)) {
+            stay += p;
+            continue;
+          }
           const int j = indexOf(s2);  // may reallocate states_
           if (j >= 0) next[a].push_back({j, p});
         }
+        if (stay > 0.0) next[a].push_back({i, stay});
       }
       Node& n = states_[static_cast<std::size_t>(i)];
       n.next = std::move(next);
@@ -158,7 +216,7 @@ bool StateSpacePlanner::allows(const rl_common::PlanningBudget& budget, long don
 }
 
 int StateSpacePlanner::bestAction(const rl_common::State& s) {
-  const auto it = index_.find(binned(s));
+  const auto it = index_.find(keyOf(binned(s)));
   if (it == index_.end() || !states_[static_cast<std::size_t>(it->second)].expanded) {
     return rng_.uniformInt(0, config_.numActions - 1);
   }
@@ -172,13 +230,13 @@ int StateSpacePlanner::bestAction(const rl_common::State& s) {
 }
 
 std::vector<double> StateSpacePlanner::qValues(const rl_common::State& s) const {
-  const auto it = index_.find(binned(s));
+  const auto it = index_.find(keyOf(binned(s)));
   if (it == index_.end()) return {};
   return states_[static_cast<std::size_t>(it->second)].q;
 }
 
 double StateSpacePlanner::value(const rl_common::State& s) const {
-  const auto it = index_.find(binned(s));
+  const auto it = index_.find(keyOf(binned(s)));
   return it == index_.end() ? 0.0 : maxQ(it->second);
 }
 

@@ -54,6 +54,15 @@ struct AgentOptions {
   /// "range" or "normalized" (with taskucbc).
   std::string taskucb = "same";
   float taskucbc = 1.0f;
+  /// The planner once intrinsic rewards are off (a task phase): "same" (--planner) or "vi"
+  /// (value iteration over the states the learned model reaches from the visited ones).
+  std::string taskplanner = "same";
+  int taskdepth = 100;  ///< --taskplanner vi: model steps expanded from the current state
+  /// --taskplanner vi: joint outcomes of the learned model below this probability are not
+  /// planned through (StateSpacePlanner::Config::minTransitionProbability).
+  float taskminprob = 0.1f;
+  /// --taskplanner vi: the features that tell the planner's states apart (empty: all).
+  std::vector<int> taskkey;
 };
 
 /// True if --nstates bins some feature.

@@ -20,6 +20,11 @@
  *       original's delayed (PO_) variants added, so the delayed names are the same planners.
  *   --planner vi / pi / sweeping: value iteration, policy iteration or prioritized sweeping,
  *       solved to convergence after every model update (StateSpacePlanner).
+ *   --taskplanner vi: once intrinsic rewards are off (the paper's task phase), value iteration
+ *       on the learned model instead, afresh at every step: the states the model's most likely
+ *       outcomes reach within --taskdepth steps of the current one (at most 20000), told apart
+ *       by the --taskkey features. UCT's rollouts from one state rarely reach a reward three
+ *       subgoals away (key, lock, door); a sweep over the imagined states does.
  * Two ways to run UCT:
  *   - real time (the default, `--planner parallel-uct`, `--rollouts 0`): model learning and
  *     planning run in their own threads while the agent acts at `--actrate` Hz;
@@ -126,6 +131,10 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   rl_common::State modelInput(const rl_common::State& s);
   std::shared_ptr<const rl_common::ModelView> currentView() const;
   std::vector<double> plannerValues(const rl_common::State& s);
+  /// --taskplanner vi: plans the task step at `s` by value iteration on the learned model;
+  /// returns the greedy action.
+  int planTaskStep(const rl_common::State& s);
+  bool taskPlannerActive() const { return !exploring_ && options_.taskplanner == "vi"; }
 
   AgentOptions options_;
   rl_common::EnvironmentDescription task_;
@@ -146,6 +155,10 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   UctPlanner* uct_ = nullptr;                ///< the planner, when it is UCT (sync mode)
   StateSpacePlanner* dp_ = nullptr;          ///< the planner, when it is vi/pi/sweeping
   std::unique_ptr<RealTimePlanner> realTime_;
+  // --taskplanner vi: the last task step's planner (kept for its values) and the task steps
+  // planned so far (each planner's seed derives from it).
+  std::unique_ptr<StateSpacePlanner> taskPlanner_;
+  std::uint64_t taskSteps_ = 0;
   struct Recorded {
     rl_common::Experience experience;  ///< as the model learned it (binned, with history)
     bool step = false;                 ///< false for a seed

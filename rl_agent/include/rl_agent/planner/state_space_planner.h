@@ -12,12 +12,13 @@
  *   Q(s,a) = R(s,a) + γ (1 − T(s,a)) Σ_s' P(s'|s,a) max_a' Q(s',a')
  *
  * where R includes any intrinsic bonus the model view adds and T is its termination
- * probability. States at the distance limit (or beyond `maxStates`) are not expanded: their Q
- * stays at its initial 0. Subclasses decide how the equation is solved (solve()). Values are
- * warm-started from the previous model version. A budget's `rollouts` caps the solver's
- * iterations (sweeps, policy iterations or single backups); its deadline is honoured between
- * iterations; an empty budget (no rollouts, no deadline) solves to convergence within the
- * solver's own cap. Deterministic; not thread-safe.
+ * probability. Successors outside the declared feature ranges count as staying put (a
+ * learned model's relative predictions can leave them). States at the distance limit (or beyond
+ * `maxStates`) are not expanded: their Q stays at its initial 0. Subclasses decide how the equation
+ * is solved (solve()). Values are warm-started from the previous model version. A budget's
+ * `rollouts` caps the solver's iterations (sweeps, policy iterations or single backups); its
+ * deadline is honoured between iterations; an empty budget (no rollouts, no deadline) solves to
+ * convergence within the solver's own cap. Deterministic; not thread-safe.
  */
 #pragma once
 
@@ -42,12 +43,25 @@ class StateSpacePlanner : public rl_common::Planner {
     int maxSteps = 100;               ///< expand states within this many model steps of a root
     std::size_t maxStates = 1000000;  ///< table size limit
     long maxIterations = 100000;      ///< solver's own cap per plan()
+    /// A factored prediction's joint outcomes below this probability are dropped (the rest
+    /// renormalised; rl_common::expandTransitions). Higher values keep a learned forest's
+    /// product of per-feature guesses from flooding the table with hallucinated states.
+    double minTransitionProbability = 1e-6;
     /// Bins per feature for continuous models: empty, or one count for every feature, or one
     /// per feature (0: that feature is used as it is). States (roots and predicted successors)
     /// are binned as the original's discretisation: factor = (max − min)/n,
     /// bin = int((s ± factor/2)/factor) (+ for s > 0), s = factor · bin.
     std::vector<int> statesPerDim;
-    std::vector<float> featMin, featMax;  ///< declared ranges (needed with statesPerDim)
+    /// Declared feature ranges (needed with statesPerDim). When given, a predicted successor
+    /// outside them is not real (the original's planners' validity check, as UctPlanner):
+    /// its probability stays in the state it was predicted from.
+    std::vector<float> featMin, featMax;
+    /// Features that tell table states apart (empty: all). With a subset the table aggregates
+    /// states: those equal on these features share one entry, whose model queries use the
+    /// first full state met for it (its representative; a root's is the root itself). A
+    /// learned factored model whose per-feature guesses never close up (e.g. LightWorld's
+    /// light sensors) otherwise reaches a new state at almost every imagined step.
+    std::vector<int> keyFeatures;
   };
 
   /// Throws std::invalid_argument for a bad configuration.
@@ -61,6 +75,10 @@ class StateSpacePlanner : public rl_common::Planner {
   /// With statesPerDim, every state argument is binned first.
   int bestAction(const rl_common::State& s) override;
 
+  /// States new to the table from now on start from `previous`'s values for their key (if it
+  /// has them) instead of 0: a table rebuilt on a changed model converges in fewer sweeps.
+  /// `previous` must outlive this planner's next plan() calls; null stops warm starts.
+  void warmStartFrom(const StateSpacePlanner* previous) { warm_ = previous; }
   /// Makes every state in `states` a root (e.g. all reachable states of a known model).
   void addStates(const std::vector<rl_common::State>& states);
   /// Q(s, ·); empty if `s` is not in the table.
@@ -69,6 +87,7 @@ class StateSpacePlanner : public rl_common::Planner {
   double value(const rl_common::State& s) const;
   std::size_t numStates() const { return states_.size(); }
   /// Every state whose predictions are cached, in table order.
+  /// (Their table keys: only the keyFeatures' values when those are given.)
   std::vector<rl_common::State> expandedStates() const;
   /// States whose predictions are cached (within maxSteps of a root).
   std::size_t numExpanded() const;
@@ -83,6 +102,7 @@ class StateSpacePlanner : public rl_common::Planner {
   };
   struct Node {
     rl_common::State key;
+    rl_common::State rep;  ///< the full state the model is queried at (== key without keyFeatures)
     std::vector<double> q;
     int depth = 0;          ///< model steps from the nearest root
     bool expanded = false;  ///< predictions below are valid for the current version
@@ -107,7 +127,10 @@ class StateSpacePlanner : public rl_common::Planner {
 
  private:
   int indexOf(const rl_common::State& s);
+  bool inRange(const rl_common::State& s) const;
   rl_common::State binned(const rl_common::State& s) const;
+  /// The table key of a (binned) state: its keyFeatures, or all of it.
+  rl_common::State keyOf(const rl_common::State& binnedState) const;
   std::vector<int> refresh();
 
   rl_common::Random rng_;
@@ -120,6 +143,7 @@ class StateSpacePlanner : public rl_common::Planner {
   bool newRoots_ = false;
   bool solved_ = false;  // solved without a budget limit and nothing changed since
   StateGrid grid_;
+  const StateSpacePlanner* warm_ = nullptr;
 };
 
 }  // namespace rl_agent
