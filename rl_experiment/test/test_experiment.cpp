@@ -213,3 +213,23 @@ TEST(ReproduceScript, ListsThePapersComparisonAgents) {
   EXPECT_NE(text.find("--model tabular --explore random --planner vi"), std::string::npos) << text;
   EXPECT_EQ(text.find("skipping agent texplore"), std::string::npos) << text;
 }
+
+// --task-planner vi: the explore-task runs of the model-based agents plan their task phase by
+// value iteration over LightWorld's position, key, door and room; the combined runs do not.
+TEST(ReproduceScript, TaskPlannerViGoesToTheExploreTaskRunsOnly) {
+  const auto [status, text] =
+      shell("RL_EXPERIMENT=" + std::string(EXPERIMENT_BIN) + " /usr/bin/python3 " +
+            std::string(REPRODUCE_SCRIPT) + " lightworld --list --task-planner vi");
+  ASSERT_EQ(status, 0) << text;
+  const auto line = [&](const std::string& start) {
+    const auto at = text.find(start);
+    return at == std::string::npos ? std::string() : text.substr(at, text.find('\n', at) - at);
+  };
+  EXPECT_NE(line("explore-task: texplore-vanir").find("--taskplanner vi --taskkey 0,1,2,3,4"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(line("combined: texplore-vanir").find("--taskplanner"), std::string::npos) << text;
+  EXPECT_NE(line("combined: texplore-vanir"), "") << text;
+  EXPECT_EQ(line("explore-task, combined: qlearner").find("--taskplanner"), std::string::npos)
+      << text;
+}
