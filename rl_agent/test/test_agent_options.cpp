@@ -213,11 +213,15 @@ TEST(AgentOptions, TaskPlannerOptions) {
   EXPECT_EQ(d.taskplanner, "same");  // the original: the task phase plans as exploration did
   EXPECT_TRUE(d.taskkey.empty());
   AgentOptions o = parse({"--agent", "texplore", "--taskplanner", "vi", "--taskkey", "0,1,4",
-                          "--taskdepth", "30", "--taskminprob", "0.05"});
+                          "--taskdepth", "30", "--taskminprob", "0.05", "--tasksweeps", "50"});
   EXPECT_EQ(o.taskplanner, "vi");
   EXPECT_EQ(o.taskkey, (std::vector<int>{0, 1, 4}));
   EXPECT_EQ(o.taskdepth, 30);
   EXPECT_FLOAT_EQ(o.taskminprob, 0.05f);
+  EXPECT_EQ(o.tasksweeps, 50);
+  EXPECT_EQ(d.tasksweeps, 0);  // to convergence
+  EXPECT_NE(errorOf({"--agent", "texplore", "--tasksweeps", "5"}).find("--taskplanner vi"),
+            std::string::npos);
   EXPECT_NE(errorOf({"--agent", "texplore", "--taskplanner", "uct"}).find("same, vi"),
             std::string::npos);
   EXPECT_NE(errorOf({"--agent", "texplore", "--taskkey", "0,1"}).find("--taskplanner vi"),

@@ -103,6 +103,10 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
           "--taskplanner vi: the learned model's joint outcomes below this probability are not "
           "planned through (lower plans better and slower)",
           inRange(0.0f, 0.999f));
+  p.value("tasksweeps", &o->tasksweeps,
+          "--taskplanner vi: value-iteration sweeps per task step, warm-started from the last "
+          "step's values (0: to convergence)",
+          atLeast(0L));
   p.value("taskkey", &o->taskkey,
           "--taskplanner vi: features (0-based, comma-separated) that tell the planner's states "
           "apart; states equal on them share a value (default: all features)");
@@ -184,10 +188,10 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
   lambdaAgents.push_back("sarsa");
   requireAgent(p, o, "lambda", lambdaAgents);
   for (const char* option :
-       {"actrate",  "m",           "model",     "planner", "combo",      "nmodels", "reltrans",
-        "abstrans", "v",           "n",         "history", "rollouts",   "tau",     "pathvisits",
-        "ucb",      "ucbc",        "bonusonce", "taskucb", "taskucbc",   "depth",   "minprob",
-        "novelty",  "taskplanner", "taskdepth", "taskkey", "taskminprob"}) {
+       {"actrate",  "m",           "model",     "planner", "combo",       "nmodels",   "reltrans",
+        "abstrans", "v",           "n",         "history", "rollouts",    "tau",       "pathvisits",
+        "ucb",      "ucbc",        "bonusonce", "taskucb", "taskucbc",    "depth",     "minprob",
+        "novelty",  "taskplanner", "taskdepth", "taskkey", "taskminprob", "tasksweeps"}) {
     requireAgent(p, o, option, kModelBased);
   }
   const bool modelBased = isOneOf(o.agent, kModelBased);
@@ -207,7 +211,7 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
           "option --taskplanner vi does not take --history (value "
           "iteration plans on states alone)");
     }
-    for (const char* option : {"taskdepth", "taskkey", "taskminprob"}) {
+    for (const char* option : {"taskdepth", "taskkey", "taskminprob", "tasksweeps"}) {
       if (p.given(option) && o.taskplanner != "vi") {
         throw rl_common::OptionError(std::string("option --") + option + " needs --taskplanner vi");
       }

@@ -302,7 +302,9 @@ int ModelBasedAgent::planTaskStep(const rl_common::State& s) {
       c, rl_common::Random::deriveSeed(options_.seed, "task planner", taskSteps_++));
   planner->warmStartFrom(taskPlanner_.get());  // last step's values: far fewer sweeps
   planner->setModel(learnedModelView());
-  lastRollouts_ = planner->plan(s, rl_common::PlanningBudget{});
+  lastRollouts_ = planner->plan(s, options_.tasksweeps > 0
+                                       ? rl_common::PlanningBudget::ofRollouts(options_.tasksweeps)
+                                       : rl_common::PlanningBudget{});
   planner->warmStartFrom(nullptr);
   taskPlanner_ = std::move(planner);
   return taskPlanner_->bestAction(s);

@@ -61,6 +61,9 @@ struct AgentOptions {
   /// --taskplanner vi: joint outcomes of the learned model below this probability are not
   /// planned through (StateSpacePlanner::Config::minTransitionProbability).
   float taskminprob = 0.1f;
+  /// --taskplanner vi: value-iteration sweeps per task step (0: to convergence); the values
+  /// carry over from step to step, so a cap spreads the solve over steps.
+  long tasksweeps = 0;
   /// --taskplanner vi: the features that tell the planner's states apart (empty: all).
   std::vector<int> taskkey;
 };
