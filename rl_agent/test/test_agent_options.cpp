@@ -220,6 +220,11 @@ TEST(AgentOptions, TaskPlannerOptions) {
   EXPECT_FLOAT_EQ(o.taskminprob, 0.05f);
   EXPECT_EQ(o.tasksweeps, 50);
   EXPECT_EQ(d.tasksweeps, 0);  // to convergence
+  EXPECT_EQ(d.taskrecent, 50);
+  EXPECT_EQ(parse({"--agent", "texplore", "--taskplanner", "vi", "--taskrecent", "0"}).taskrecent,
+            0);
+  EXPECT_NE(errorOf({"--agent", "texplore", "--taskrecent", "5"}).find("--taskplanner vi"),
+            std::string::npos);
   EXPECT_NE(errorOf({"--agent", "texplore", "--tasksweeps", "5"}).find("--taskplanner vi"),
             std::string::npos);
   EXPECT_NE(errorOf({"--agent", "texplore", "--taskplanner", "uct"}).find("same, vi"),

@@ -107,6 +107,10 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
           "--taskplanner vi: value-iteration sweeps per task step, warm-started from the last "
           "step's values (0: to convergence)",
           atLeast(0L));
+  p.value("taskrecent", &o->taskrecent,
+          "--taskplanner vi: the last this many observed states are planned from and stand for "
+          "their --taskkey entries (0: only the current state)",
+          atLeast(0));
   p.value("taskkey", &o->taskkey,
           "--taskplanner vi: features (0-based, comma-separated) that tell the planner's states "
           "apart; states equal on them share a value (default: all features)");
@@ -188,10 +192,11 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
   lambdaAgents.push_back("sarsa");
   requireAgent(p, o, "lambda", lambdaAgents);
   for (const char* option :
-       {"actrate",  "m",           "model",     "planner", "combo",       "nmodels",   "reltrans",
-        "abstrans", "v",           "n",         "history", "rollouts",    "tau",       "pathvisits",
-        "ucb",      "ucbc",        "bonusonce", "taskucb", "taskucbc",    "depth",     "minprob",
-        "novelty",  "taskplanner", "taskdepth", "taskkey", "taskminprob", "tasksweeps"}) {
+       {"actrate",  "m",           "model",      "planner",   "combo",       "nmodels",
+        "reltrans", "abstrans",    "v",          "n",         "history",     "rollouts",
+        "tau",      "pathvisits",  "ucb",        "ucbc",      "bonusonce",   "taskucb",
+        "taskucbc", "depth",       "minprob",    "novelty",   "taskplanner", "taskdepth",
+        "taskkey",  "taskminprob", "tasksweeps", "taskrecent"}) {
     requireAgent(p, o, option, kModelBased);
   }
   const bool modelBased = isOneOf(o.agent, kModelBased);
@@ -211,7 +216,7 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
           "option --taskplanner vi does not take --history (value "
           "iteration plans on states alone)");
     }
-    for (const char* option : {"taskdepth", "taskkey", "taskminprob", "tasksweeps"}) {
+    for (const char* option : {"taskdepth", "taskkey", "taskminprob", "tasksweeps", "taskrecent"}) {
       if (p.given(option) && o.taskplanner != "vi") {
         throw rl_common::OptionError(std::string("option --") + option + " needs --taskplanner vi");
       }

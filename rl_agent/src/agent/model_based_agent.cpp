@@ -247,6 +247,10 @@ rl_common::State ModelBasedAgent::modelInput(const rl_common::State& s) {
 
 void ModelBasedAgent::learn(const rl_common::Experience& e) {
   ++learned_;
+  if (options_.taskplanner == "vi" && options_.taskrecent > 0) {
+    recentStates_.push_back(e.next);
+    if (static_cast<int>(recentStates_.size()) > options_.taskrecent) recentStates_.pop_front();
+  }
   if (recording_) {
     recorded_.push_back({e, true});
     ++recordedSteps_;
@@ -302,6 +306,11 @@ int ModelBasedAgent::planTaskStep(const rl_common::State& s) {
       c, rl_common::Random::deriveSeed(options_.seed, "task planner", taskSteps_++));
   planner->warmStartFrom(taskPlanner_.get());  // last step's values: far fewer sweeps
   planner->setModel(learnedModelView());
+  // The states just observed are their entries' representatives (oldest first, so the newest
+  // of an entry wins; the current state last): imagined ones alone let each of two cells
+  // promise a route through the other that the model gets wrong from the real state, and the
+  // greedy agent oscillates between them (docs/science/lightworld-curiosity.md §5.2).
+  planner->addStates(std::vector<rl_common::State>(recentStates_.begin(), recentStates_.end()));
   lastRollouts_ = planner->plan(s, options_.tasksweeps > 0
                                        ? rl_common::PlanningBudget::ofRollouts(options_.tasksweeps)
                                        : rl_common::PlanningBudget{});

@@ -64,6 +64,9 @@ struct AgentOptions {
   /// --taskplanner vi: value-iteration sweeps per task step (0: to convergence); the values
   /// carry over from step to step, so a cap spreads the solve over steps.
   long tasksweeps = 0;
+  /// --taskplanner vi: the last this many observed states are roots and their entries'
+  /// representatives (0: only the current state).
+  int taskrecent = 50;
   /// --taskplanner vi: the features that tell the planner's states apart (empty: all).
   std::vector<int> taskkey;
 };

@@ -23,7 +23,8 @@
  *   --taskplanner vi: once intrinsic rewards are off (the paper's task phase), value iteration
  *       on the learned model instead, afresh at every step: the states the model's most likely
  *       outcomes reach within --taskdepth steps of the current one (at most 20000), told apart
- *       by the --taskkey features. UCT's rollouts from one state rarely reach a reward three
+ *       by the --taskkey features, the last --taskrecent observed states serving as their
+ *       entries' representatives. UCT's rollouts from one state rarely reach a reward three
  *       subgoals away (key, lock, door); a sweep over the imagined states does.
  * Two ways to run UCT:
  *   - real time (the default, `--planner parallel-uct`, `--rollouts 0`): model learning and
@@ -44,6 +45,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <string>
 #include <vector>
@@ -159,6 +161,7 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   // planned so far (each planner's seed derives from it).
   std::unique_ptr<StateSpacePlanner> taskPlanner_;
   std::uint64_t taskSteps_ = 0;
+  std::deque<rl_common::State> recentStates_;  ///< the last --taskrecent states observed
   struct Recorded {
     rl_common::Experience experience;  ///< as the model learned it (binned, with history)
     bool step = false;                 ///< false for a seed
