@@ -182,3 +182,21 @@ TEST(ModelBasedAgent, TaskKeyFeaturesMustExist) {
   AgentOptions o = texplore({"--rollouts", "5", "--taskplanner", "vi", "--taskkey", "0,3"});
   EXPECT_THROW(ModelBasedAgent(o, corridorTask()), std::invalid_argument);
 }
+
+TEST(ModelBasedAgent, TaskPlannerViInRealTimeKeepsTheActionRate) {
+  // In real time the task phase plans in the agent's thread on the model thread's latest view
+  // and still waits for each action's due time.
+  AgentOptions o = texplore({"--explore", "random", "--actrate", "200", "--taskplanner", "vi"});
+  o.seed = 4;
+  ModelBasedAgent agent(o, corridorTask());
+  ASSERT_TRUE(agent.realTime());
+  run(agent, 20);
+  agent.setIntrinsicEnabled(false);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));  // let the model thread catch up
+  const auto start = std::chrono::steady_clock::now();
+  const auto greedy = run(agent, 3);
+  const long actions = greedy[0] + greedy[1] + greedy[2];
+  EXPECT_GE(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(5 * (actions - 3)));
+  EXPECT_LE(greedy[1], 9);
+  EXPECT_LE(greedy[2], 9);
+}
