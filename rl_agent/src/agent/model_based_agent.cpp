@@ -73,15 +73,23 @@ UctPlanner::Config plannerConfig(const AgentOptions& o,
   return c;
 }
 
-std::unique_ptr<StateSpacePlanner> dpPlanner(const AgentOptions& o,
-                                             const rl_common::EnvironmentDescription& t,
-                                             std::uint64_t seed) {
+/// What every dynamic-programming planner of the agent shares: actions, discount, the feature
+/// ranges (successors outside them are not real: the original's check) and the --nstates grid.
+StateSpacePlanner::Config dpConfig(const AgentOptions& o,
+                                   const rl_common::EnvironmentDescription& t) {
   StateSpacePlanner::Config c;
   c.numActions = t.numActions;
   c.gamma = std::min(static_cast<double>(o.gamma), 0.999999);
-  c.featMin = t.minFeatures;  // successors outside are not real (the original's check)
+  c.featMin = t.minFeatures;
   c.featMax = t.maxFeatures;
   if (binsStates(o)) c.statesPerDim = o.nstates;  // the planner's grid, as the original's
+  return c;
+}
+
+std::unique_ptr<StateSpacePlanner> dpPlanner(const AgentOptions& o,
+                                             const rl_common::EnvironmentDescription& t,
+                                             std::uint64_t seed) {
+  StateSpacePlanner::Config c = dpConfig(o, t);
   if (o.planner == "vi") {
     c.maxSteps = 100;  // the original's ValueIteration MAX_STEPS
     return std::make_unique<ValueIteration>(c, seed);
@@ -290,17 +298,12 @@ void ModelBasedAgent::seedExperiences(const std::vector<rl_common::Experience>& 
 int ModelBasedAgent::planTaskStep(const rl_common::State& s) {
   // A fresh table every step, rooted at s: the model changed, and with --taskkey the table's
   // representatives must be the states imagined from s, not from earlier visits.
-  StateSpacePlanner::Config c;
-  c.numActions = task_.numActions;
-  c.gamma = std::min(static_cast<double>(options_.gamma), 0.999999);
+  StateSpacePlanner::Config c = dpConfig(options_, task_);
   c.maxSteps = options_.taskdepth;
   c.maxStates = 20000;  // bounds a step's model queries (6 per state)
   // 0.01 plans better than the default 0.1 but takes 20 times longer (0.3 s against 15 ms a
   // step on LightWorld); the most likely outcome alone (0.5) strands the agent.
   c.minTransitionProbability = options_.taskminprob;
-  c.featMin = task_.minFeatures;
-  c.featMax = task_.maxFeatures;
-  if (binsStates(options_)) c.statesPerDim = options_.nstates;
   c.keyFeatures = options_.taskkey;
   auto planner = std::make_unique<ValueIteration>(
       c, rl_common::Random::deriveSeed(options_.seed, "task planner", taskSteps_++));

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "rl_agent/planner/feature_ranges.h"
+
 namespace rl_agent {
 
 StateSpacePlanner::StateSpacePlanner(const Config& config, std::uint64_t seed)
@@ -93,11 +95,7 @@ int StateSpacePlanner::indexOf(const rl_common::State& raw) {
 
 bool StateSpacePlanner::inRange(const rl_common::State& s) const {
   constexpr float kEps = 1e-5f;  // as UctPlanner::Config::rangeEpsilon
-  const std::size_t n = std::min(s.size(), config_.featMin.size());
-  for (std::size_t j = 0; j < n; ++j) {
-    if (!(s[j] >= config_.featMin[j] - kEps && s[j] <= config_.featMax[j] + kEps)) return false;
-  }
-  return true;
+  return withinFeatureRanges(s, config_.featMin, config_.featMax, kEps);
 }
 
 void StateSpacePlanner::addStates(const std::vector<rl_common::State>& states) {

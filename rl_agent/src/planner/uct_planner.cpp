@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "rl_agent/planner/feature_ranges.h"
+
 namespace rl_agent {
 
 using rl_common::State;
@@ -395,13 +397,7 @@ bool UctPlanner::inRange(const State& s) const {
   if (!allFinite(s)) {
     return false;
   }
-  const float eps = config_.rangeEpsilon;
-  for (std::size_t j = 0; j < config_.featMin.size(); ++j) {
-    if (s[j] < config_.featMin[j] - eps || s[j] > config_.featMax[j] + eps) {
-      return false;
-    }
-  }
-  return true;
+  return withinFeatureRanges(s, config_.featMin, config_.featMax, config_.rangeEpsilon);
 }
 
 void UctPlanner::appendDiscretized(const State& s, State& out) const {
