@@ -9,20 +9,28 @@ prints, per folder, as Markdown tables:
     the joint distance per action (which actions do);
   * the exploration steps by class (a move, or PICKUP/PRESS and where it was tried), with the
     variance and novelty bonuses the agent met on them;
-  * doors passed (exploration reward / 10) and PRESS on objects;
+  * doors passed (exploration reward / 10), PRESS on objects, and the exploration steps taken
+    with the key on the floor (with their correlation with the final distance);
   * with the runner's --eval-groups, the joint distance per group of sampled states (e.g.
     LightWorld's room, have_key and door_open: --eval-groups 4,2,3) and each group's share of
     the samples, so that one sees which situations carry the error.
 
-Usage: diagnose_exploration.py [--step N] FOLDER [FOLDER ...]
+With --reference REF, each other folder's final distance is also compared with REF's at equal
+exploration steps with the key on the floor (least squares with that covariate).
+
+Usage: diagnose_exploration.py [--step N] [--reference REF] FOLDER [FOLDER ...]
 """
 import argparse
 import collections
 import csv
 import glob
+import math
 import os
 import statistics
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import stats  # noqa: E402  (rl_experiment/scripts/stats.py)
 
 # LightWorld's 17 features (shared/spec/ORIGINAL.md §4.2) and 6 actions.
 FEATURES = ["ns", "ew", "have_key", "door_open", "room", "key_n", "key_e", "key_w", "key_s",
@@ -139,15 +147,65 @@ def summary_line(folder):
         return "(no finished trials)"
     doors = [float(t["explore_reward"] or 0) / 10 for t in trials]
     press = [sum(float(t.get(k) or 0) for k in PRESS_ON_OBJECTS) for t in trials]
-    return ("%d trials: doors passed while exploring %.2f per trial (sd %.2f); PRESS on objects "
+    line = ("%d trials: doors passed while exploring %.2f per trial (sd %.2f); PRESS on objects "
             "%.1f per trial (sd %.1f)" % (len(trials), mean(doors), sd(doors), mean(press),
                                           sd(press)))
+    # Exploration steps with the key on the floor: the only steps that teach the key sensors,
+    # and most of the trial-to-trial spread of the final distance (lightworld-curiosity.md §2.1).
+    floor = [(float(t["explore_key_on_floor"]), float(t["final_accuracy"])) for t in trials
+             if t.get("explore_key_on_floor") and t.get("final_accuracy")]
+    if floor:
+        line += "; exploration steps with the key on the floor %.0f per trial (sd %.0f)" % (
+            mean([f for f, _ in floor]), sd([f for f, _ in floor]))
+        if len(floor) > 2 and len({f for f, _ in floor}) > 1:
+            line += ", correlation with the final distance %.2f" % statistics.correlation(
+                [f for f, _ in floor], [a for _, a in floor])
+    return line
+
+
+def floor_pairs(folder):
+    """(exploration steps with the key on the floor, final distance) per finished trial."""
+    out = []
+    for path in sorted(glob.glob(os.path.join(folder, "trial-*.csv"))):
+        t = rows(path)[0]
+        if t.get("explore_key_on_floor") and t.get("final_accuracy"):
+            out.append((float(t["explore_key_on_floor"]), float(t["final_accuracy"])))
+    return out
+
+
+def floor_adjusted(folder, reference):
+    """The folder's final distance minus the reference's at equal time with the key on the floor.
+
+    Ordinary least squares of distance ~ 1 + [folder] + log(1 + steps with the key on the
+    floor) over both folders' trials (an analysis of covariance); returns (difference, its
+    standard error, the two-sided p of its t statistic, the fit's R^2), or None with fewer than
+    five trials in all.
+    """
+    a, b = floor_pairs(folder), floor_pairs(reference)
+    n = len(a) + len(b)
+    if not a or not b or n < 5:
+        return None
+    import numpy as np
+    y = np.array([d for _, d in a + b])
+    x = np.column_stack([np.ones(n), [1.0] * len(a) + [0.0] * len(b),
+                         np.log1p([f for f, _ in a + b])])
+    beta = np.linalg.lstsq(x, y, rcond=None)[0]
+    resid = y - x @ beta
+    dof = n - 3
+    s2 = float(resid @ resid) / dof
+    se = math.sqrt(s2 * np.linalg.inv(x.T @ x)[1, 1])
+    tss = float(((y - y.mean()) ** 2).sum())
+    p = stats.student_t_two_sided_p(beta[1] / se, dof) if se > 0 else float("nan")
+    return float(beta[1]), se, p, (1.0 - float(resid @ resid) / tss) if tss > 0 else float("nan")
 
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--step", type=int, default=None,
                     help="accuracy checkpoint to report (default: the last exploration one)")
+    ap.add_argument("--reference", default=None,
+                    help="a run folder to compare every other folder with at equal exploration "
+                         "steps with the key on the floor")
     ap.add_argument("folders", nargs="+")
     args = ap.parse_args(argv)
     for folder in args.folders:
@@ -162,6 +220,13 @@ def main(argv=None):
         if groups:
             print("\n".join(groups) + "\n")
         print("\n".join(class_table(folder)) + "\n")
+        if args.reference and os.path.normpath(folder) != os.path.normpath(args.reference):
+            adj = floor_adjusted(folder, args.reference)
+            if adj:
+                print("final distance against %s at equal steps with the key on the floor: "
+                      "%+.3f (se %.3f, p = %s; R^2 of the fit %.2f)\n" % (
+                          os.path.basename(os.path.normpath(args.reference)), adj[0], adj[1],
+                          stats.format_p(adj[2]), adj[3]))
     return 0
 
 

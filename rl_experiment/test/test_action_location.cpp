@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "rl_env/env/light_world.h"
+#include "rl_env/env/taxi.h"
 
 using rl_env::LightWorld;
 using rl_experiment::Location;
@@ -50,4 +51,15 @@ TEST(ActionLocation, PressAndPickupOnEachObject) {
   EXPECT_EQ(counts.get(rl_experiment::ObjectAction::kPickup, Location::kElsewhere), 1);
   EXPECT_EQ(counts.get(rl_experiment::ObjectAction::kPress, Location::kKey), 0);
   EXPECT_STREQ(rl_experiment::locationName(Location::kLockWrong), "lock_wrong");
+}
+
+TEST(ActionLocation, KeyOnFloorUntilPickedUpAndOnlyForLightWorld) {
+  LightWorld lw(1, false);
+  const LightWorld::Cell key{2, 2};
+  lw.setFullState(at(key.ns, key.ew, false, false, key));
+  EXPECT_EQ(rl_experiment::keyOnFloor(lw), std::optional<bool>(true));
+  lw.apply(LightWorld::kPickup);  // deterministic mode: the pickup works
+  EXPECT_EQ(rl_experiment::keyOnFloor(lw), std::optional<bool>(false));
+  rl_env::Taxi other(1, false);
+  EXPECT_FALSE(rl_experiment::keyOnFloor(other).has_value());
 }

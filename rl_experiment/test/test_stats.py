@@ -22,6 +22,7 @@ SCRIPTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "script
 sys.path.insert(0, os.path.abspath(SCRIPTS))
 import stats  # noqa: E402
 import plot_results  # noqa: E402
+import diagnose_exploration  # noqa: E402
 
 
 class IncompleteBeta(unittest.TestCase):
@@ -253,6 +254,49 @@ class WriteTable(unittest.TestCase):
         self.assertNotEqual(e.exception.code, 0)
         self.assertIn("nope", err.getvalue())
         self.assertIn("other, texplore-vanir", err.getvalue())
+
+
+class FloorAdjusted(unittest.TestCase):
+    """diagnose_exploration.py's comparison at equal steps with the key on the floor."""
+
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp()
+
+    def tearDown(self):
+        shutil.rmtree(self.tmp)
+
+    def folder(self, name, trials):
+        path = os.path.join(self.tmp, name)
+        os.makedirs(path)
+        for i, (floor, dist) in enumerate(trials):
+            with open(os.path.join(path, "trial-%03d.csv" % i), "w", newline="") as f:
+                w = csv.writer(f)
+                w.writerow(["trial", "explore_key_on_floor", "final_accuracy"])
+                w.writerow([i, floor, dist])
+        return path
+
+    def test_a_shift_at_equal_floor_time_is_found_and_a_floor_effect_is_not_one(self):
+        floors = [20, 50, 100, 200, 400, 800]
+        law = [0.9 - 0.05 * math.log1p(f) for f in floors]
+        noise = [0.004, -0.003, 0.002, -0.004, 0.003, -0.002]
+        ref = self.folder("ref", [(f, d + e) for f, d, e in zip(floors, law, noise)])
+        # Same law, 0.03 lower: a real difference at equal floor time.
+        lower = self.folder("lower", [(f, d - 0.03 - e) for f, d, e in zip(floors, law, noise)])
+        diff, se, p, r2 = diagnose_exploration.floor_adjusted(lower, ref)
+        self.assertAlmostEqual(diff, -0.03, delta=0.005)
+        self.assertLess(p, 0.001)
+        self.assertGreater(r2, 0.9)
+        # Same law, only more floor time: a lower raw mean, no difference once adjusted.
+        more = self.folder("more", [(f * 4, 0.9 - 0.05 * math.log1p(f * 4) - e)
+                                    for f, e in zip(floors, noise)])
+        diff, se, p, _ = diagnose_exploration.floor_adjusted(more, ref)
+        self.assertLess(abs(diff), 0.01)
+        self.assertGreater(p, 0.05)
+
+    def test_too_few_trials_give_no_comparison(self):
+        a = self.folder("a", [(10, 0.5), (20, 0.4)])
+        b = self.folder("b", [(10, 0.5), (30, 0.4)])
+        self.assertIsNone(diagnose_exploration.floor_adjusted(a, b))
 
 
 class _Recorder(unittest.TextTestResult):

@@ -96,8 +96,13 @@ TEST(TrialLogger, WritesStepsEpisodesAccuracyAndSummary) {
   ASSERT_EQ(trial[0].size(), row.size());
   EXPECT_EQ(trial[0][0], "trial");
   EXPECT_EQ(trial[1][7], "50");  // steps
-  EXPECT_EQ(trial[0][25], "peak_rss_mb");
-  EXPECT_EQ(trial[1][25], "2");
+  // Exploration steps with the key on the floor: LightWorld starts with it there, and only the
+  // 30 exploration steps count.
+  EXPECT_EQ(trial[0][23], "explore_key_on_floor");
+  EXPECT_GE(std::stol(trial[1][23]), 1);
+  EXPECT_LE(std::stol(trial[1][23]), 30);
+  EXPECT_EQ(trial[0][26], "peak_rss_mb");
+  EXPECT_EQ(trial[1][26], "2");
   // The original stream: one bare reward per step (non-episodic).
   std::istringstream in(original.str());
   int lines = 0;

@@ -36,6 +36,12 @@ Location locationOf(const rl_common::Environment& env, int action) {
   return Location::kElsewhere;
 }
 
+std::optional<bool> keyOnFloor(const rl_common::Environment& env) {
+  const auto* lw = dynamic_cast<const rl_env::LightWorld*>(&env);
+  if (lw == nullptr) return std::nullopt;
+  return lw->objects().keyPresent;
+}
+
 void LocationCounts::add(const rl_common::Environment& env, int action) {
   const Location l = locationOf(env, action);
   if (l == Location::kNone) return;

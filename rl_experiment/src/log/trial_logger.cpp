@@ -49,6 +49,7 @@ TrialLogger::TrialLogger(const std::string& folder, TrialInfo info, EvalSettings
 
 void TrialLogger::beforeStep(const rl_common::Environment& env, long /*step*/, int action) {
   pendingTarget_ = locationOf(env, action);
+  pendingKeyOnFloor_ = keyOnFloor(env);
   locations_.add(env, action);
 }
 
@@ -68,6 +69,10 @@ void TrialLogger::onStep(const StepRecord& r) {
                  r.hasBreakdown ? value(r.valueSpread) : ""});
   }
   pendingTarget_ = Location::kNone;
+  if (pendingKeyOnFloor_ && r.phase == Phase::kExplore) {
+    exploreKeyOnFloor_ = exploreKeyOnFloor_.value_or(0) + (*pendingKeyOnFloor_ ? 1 : 0);
+  }
+  pendingKeyOnFloor_.reset();
   if (original_ != nullptr && perStepStream_) *original_ << r.reward << "\n";
 }
 
@@ -149,6 +154,8 @@ std::vector<std::pair<std::string, std::string>> TrialLogger::finish(const Trial
           std::to_string(locations_.counts[kind][l]));
     }
   }
+  row.emplace_back("explore_key_on_floor",
+                   exploreKeyOnFloor_ ? std::to_string(*exploreKeyOnFloor_) : std::string());
   row.emplace_back("seconds", formatNumber(seconds));
   row.emplace_back("steps_per_second", formatNumber(seconds > 0 ? s.steps / seconds : 0.0));
   row.emplace_back("peak_rss_mb", formatNumber(peakRssKb / 1024.0));

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 
 #include "rl_common/environment.h"
@@ -26,6 +27,11 @@ enum class ObjectAction { kPress = 0, kPickup = 1 };
 /// `action` is PRESS or PICKUP. kLock means on the lock holding the key with the door closed
 /// (the press that opens the door); kLockWrong on the lock otherwise.
 Location locationOf(const rl_common::Environment& env, int action);
+
+/// Whether `env` is a LightWorld whose key lies on the floor. Only then do the key sensors
+/// read anything, so only those steps teach a model the key lights' dynamics (most of the
+/// model distance, docs/science/lightworld-curiosity.md §2); nullopt for other environments.
+std::optional<bool> keyOnFloor(const rl_common::Environment& env);
 
 /// Counts of PRESS and PICKUP per location.
 struct LocationCounts {

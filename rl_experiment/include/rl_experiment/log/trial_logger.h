@@ -93,6 +93,8 @@ class TrialLogger : public TrialObserver {
   std::ostream* original_;
   std::unique_ptr<CsvFile> steps_, episodes_, accuracy_, groups_;
   Location pendingTarget_ = Location::kNone;
+  std::optional<bool> pendingKeyOnFloor_;
+  std::optional<long> exploreKeyOnFloor_;  ///< exploration steps taken with the key on the floor
   LocationCounts locations_;
   rl_common::Random evalRng_;
   std::unique_ptr<ModelAccuracy> evaluator_;
