@@ -73,7 +73,9 @@ TEST(FactoredModel, PredictsADeterministicDomainExactly) {
       ASSERT_TRUE(info.known);
       const auto next = rl_common::expandTransitions(info);
       ASSERT_EQ(next.size(), 1u) << "x=" << x << " a=" << a;
-      if (!truth.terminal) EXPECT_EQ(next[0].first, truth.next);
+      if (!truth.terminal) {
+        EXPECT_EQ(next[0].first, truth.next);
+      }
       EXPECT_NEAR(next[0].second, 1.0, 1e-9);
       EXPECT_NEAR(info.reward, truth.reward, 1e-6) << "x=" << x << " a=" << a;
       EXPECT_NEAR(info.termProb, truth.terminal ? 1.0 : 0.0, 1e-6);
@@ -129,6 +131,42 @@ TEST(FactoredModel, IndependentProductOverFeatures) {
   EXPECT_NEAR(total, 1.0, 1e-12);
   EXPECT_DOUBLE_EQ(rl_common::transitionProbability(info, {0.5f, 0.0f}), 0.0);
   EXPECT_FLOAT_EQ(info.termProb, 0.0f);  // non-episodic
+}
+
+TEST(FactoredModel, OneQueryWithVarianceEqualsTheTwoCalls) {
+  // The planner's fused query descends each tree once for the prediction and D(s, a); the
+  // values must be exactly those of query() and variance(), for every combination.
+  for (const char* combo : {"average", "weighted", "best", "separate"}) {
+    for (bool episodic : {true, false}) {
+      auto config = corridorConfig(5);
+      config.episodic = episodic;
+      config.forest.combination = rl_agent::combinationFromName(combo);
+      FactoredModel model(config, 9);
+      const auto empty = model.factoredView();
+      double v = -1.0;
+      empty->query({2.0f}, 1, &v);
+      EXPECT_EQ(v, empty->variance({2.0f}, 1));
+      // Noisy data, so the trees disagree somewhere.
+      std::vector<Experience> data = allCorridorExperiences();
+      for (int x = 0; x < 5; ++x) data.push_back({{float(x)}, 2, 0.5f, {float(x + 1)}, false});
+      model.update(data);
+      const auto view = model.factoredView();
+      double disagreeing = 0.0;
+      for (int x = 0; x <= 5; ++x) {
+        for (int a = 0; a < 3; ++a) {
+          double d = -1.0;
+          const auto fused = view->query({float(x)}, a, &d);
+          const auto plain = view->query({float(x)}, a);
+          ASSERT_EQ(d, view->variance({float(x)}, a)) << combo << " x=" << x << " a=" << a;
+          ASSERT_EQ(fused.factored, plain.factored);
+          ASSERT_EQ(fused.reward, plain.reward);
+          ASSERT_EQ(fused.termProb, plain.termProb);
+          disagreeing += d;
+        }
+      }
+      EXPECT_GT(disagreeing, 0.0) << combo;
+    }
+  }
 }
 
 TEST(FactoredModel, RejectsMalformedExperiences) {

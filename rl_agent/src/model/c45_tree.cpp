@@ -489,7 +489,12 @@ void describeNode(const Node* node, std::ostringstream& out) {
 // ------------------------------------------------------------------------------------------
 
 Distribution C45Tree::Snapshot::predict(const std::vector<float>& input) const {
-  if (!root_) return {{0.0f, 1.0}};
+  return leaf(input);
+}
+
+const Distribution& C45Tree::Snapshot::leaf(const std::vector<float>& input) const {
+  static const Distribution kEmptyTree{{0.0f, 1.0}};
+  if (!root_) return kEmptyTree;
   if (input.size() != numInputs_) {
     throw std::invalid_argument("C45Tree::Snapshot::predict(): input has " +
                                 std::to_string(input.size()) + " values, expected " +

@@ -38,9 +38,13 @@ std::shared_ptr<const ExplorationModel::View> ExplorationModel::explorationView(
 
 rl_common::StateActionInfo ExplorationModel::View::query(const rl_common::State& input,
                                                          int action) const {
-  rl_common::StateActionInfo info = model_->query(input, action);
-  if (rewards_ == nullptr) return info;
-  const BonusContext context{*model_, visited_, input, action};
+  if (rewards_ == nullptr) return model_->query(input, action);
+  bool needVariance = false;
+  for (const auto& r : *rewards_) needVariance = needVariance || r->usesVariance();
+  double variance = 0.0;
+  rl_common::StateActionInfo info =
+      model_->query(input, action, needVariance ? &variance : nullptr);
+  const BonusContext context{*model_, visited_, input, action, needVariance ? &variance : nullptr};
   for (const auto& r : *rewards_) r->apply(context, &info);
   return info;
 }

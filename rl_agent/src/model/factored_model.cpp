@@ -109,11 +109,18 @@ Distribution FactoredModel::View::featureDistribution(const rl_common::State& in
 
 rl_common::StateActionInfo FactoredModel::View::query(const rl_common::State& input,
                                                       int action) const {
+  return query(input, action, nullptr);
+}
+
+rl_common::StateActionInfo FactoredModel::View::query(const rl_common::State& input, int action,
+                                                      double* variance) const {
   const std::vector<float> x = treeInput(input, action);
+  if (variance != nullptr) *variance = 0.0;
   const std::size_t d = config_->featMin.size();
   rl_common::StateActionInfo info;
   const rl_common::State current(input.begin(), input.begin() + d);
   if (experiences_ == 0) {
+    if (variance != nullptr) *variance = this->variance(input, action);
     info.transitions.emplace_back(current, 1.0);
     info.reward = info.externalReward = kUnknownReward;
     info.known = false;
@@ -121,23 +128,30 @@ rl_common::StateActionInfo FactoredModel::View::query(const rl_common::State& in
   }
   // One distribution per feature; their independent product is the next-state distribution
   // (never expanded here: with 17 features it can have millions of outcomes).
+  // D sums in variance()'s order: the features, the reward, the terminal output.
+  double sum = 0.0, part = 0.0;
   info.factored.resize(d);
   for (std::size_t j = 0; j < d; ++j) {
-    const Distribution dist = features_[j].predict(x);
+    const Distribution dist = variance ? features_[j].predict(x, &part) : features_[j].predict(x);
+    sum += part;
     auto& out = info.factored[j];
     out.reserve(dist.size());
     for (const auto& [value, p] : dist) {
       out.emplace_back(config_->relativeTransitions ? current[j] + value : value, p);
     }
   }
-  info.reward = info.externalReward = static_cast<float>(expectation(reward_.predict(x)));
+  info.reward = info.externalReward =
+      static_cast<float>(expectation(variance ? reward_.predict(x, &part) : reward_.predict(x)));
+  sum += part;
   if (config_->episodic) {
     double t = 0.0;
-    for (const auto& [value, p] : terminal_.predict(x)) {
+    for (const auto& [value, p] : variance ? terminal_.predict(x, &part) : terminal_.predict(x)) {
       t += std::clamp(static_cast<double>(value), 0.0, 1.0) * p;
     }
+    sum += part;
     info.termProb = static_cast<float>(t);
   }
+  if (variance != nullptr) *variance = sum / static_cast<double>(features_.size() + 2);
   info.known = true;
   return info;
 }

@@ -11,23 +11,38 @@ namespace rl_agent {
 namespace {
 
 /// Sum of weight_i * P_i over the distributions, equal outcomes merged, sorted by value.
-Distribution combine(const std::vector<Distribution>& dists, const std::vector<double>& weights) {
+Distribution combine(const std::vector<const Distribution*>& dists,
+                     const std::vector<double>& weights) {
   Distribution out;
   for (std::size_t i = 0; i < dists.size(); ++i) {
     if (weights[i] == 0.0) continue;
-    for (const auto& [v, p] : dists[i]) out.emplace_back(v, weights[i] * p);
+    for (const auto& [v, p] : *dists[i]) out.emplace_back(v, weights[i] * p);
   }
   std::stable_sort(out.begin(), out.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
-  Distribution merged;
+  // Merge in place: the same sums, in the same order, as into a second list.
+  std::size_t n = 0;
   for (const auto& [v, p] : out) {
-    if (!merged.empty() && merged.back().first == v) {
-      merged.back().second += p;
+    if (n > 0 && out[n - 1].first == v) {
+      out[n - 1].second += p;
     } else {
-      merged.emplace_back(v, p);
+      out[n++] = {v, p};
     }
   }
-  return merged;
+  out.resize(n);
+  return out;
+}
+
+/// KL(P || Q) with the original's epsilon, for distributions known to be valid (tree leaves).
+double klUnchecked(const Distribution& p, const Distribution& q) {
+  double kl = 0.0;
+  for (const auto& [v, pv] : p) {
+    if (pv <= 0.0) continue;
+    double qv = probabilityOf(q, v);
+    if (qv <= 0.0) qv = 0.01;  // the original's zero-probability epsilon
+    kl += pv * std::log(pv / qv);
+  }
+  return kl;
 }
 
 std::size_t bestTree(const std::vector<double>& accuracy) {
@@ -60,15 +75,31 @@ double klDivergence(const Distribution& p, const Distribution& q) {
       }
     }
   }
-  double kl = 0.0;
-  for (const auto& [v, pv] : p) {
-    if (pv <= 0.0) continue;
-    double qv = probabilityOf(q, v);
-    if (qv <= 0.0) qv = 0.01;  // the original's zero-probability epsilon
-    kl += pv * std::log(pv / qv);
-  }
-  return kl;
+  return klUnchecked(p, q);
 }
+
+namespace {
+
+/// D of the leaves: mean pairwise KL / ln 100.
+double disagreement(const std::vector<const Distribution*>& p) {
+  const std::size_t m = p.size();
+  if (m < 2) return 0.0;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < m; ++i) {
+    for (std::size_t j = 0; j < m; ++j) {
+      if (i != j) sum += klUnchecked(*p[i], *p[j]);
+    }
+  }
+  return sum / static_cast<double>(m * (m - 1)) / kLn100;
+}
+
+// The leaves of one query: reused across a thread's queries (no allocation per query).
+std::vector<const Distribution*>& scratchLeaves() {
+  thread_local std::vector<const Distribution*> leaves;
+  return leaves;
+}
+
+}  // namespace
 
 // ------------------------------------------------------------------------------------------
 // Snapshot
@@ -78,45 +109,72 @@ std::vector<Distribution> RandomForest::Snapshot::treePredictions(
     const std::vector<float>& input) const {
   std::vector<Distribution> out;
   out.reserve(trees_.size());
-  for (const C45Tree::Snapshot& t : trees_) out.push_back(t.predict(input));
+  for (const C45Tree::Snapshot& t : trees_) out.push_back(t.leaf(input));
   return out;
 }
 
-Distribution RandomForest::Snapshot::predict(const std::vector<float>& input) const {
-  if (trees_.empty()) return {{0.0f, 1.0}};  // a default-constructed snapshot
+void RandomForest::Snapshot::leaves(const std::vector<float>& input,
+                                    std::vector<const Distribution*>* out) const {
+  out->clear();
+  for (const C45Tree::Snapshot& t : trees_) out->push_back(&t.leaf(input));
+}
+
+Distribution RandomForest::Snapshot::combined(
+    const std::vector<const Distribution*>& leaves) const {
   switch (combination_) {
     case Combination::Separate:
-      return trees_[0].predict(input);
+      return *leaves[0];
     case Combination::Best:
-      return trees_[bestTree(accuracy_)].predict(input);
+      return *leaves[bestTree(accuracy_)];
     case Combination::WeightedAverage: {
       double sum = 0.0;
       for (double a : accuracy_) sum += a;
       if (sum > 0.0) {
         std::vector<double> w(accuracy_.size());
         for (std::size_t i = 0; i < w.size(); ++i) w[i] = accuracy_[i] / sum;
-        return combine(treePredictions(input), w);
+        return combine(leaves, w);
       }
       break;  // no tree has been right yet: plain average
     }
     case Combination::Average:
       break;
   }
-  return combine(treePredictions(input),
+  return combine(leaves,
                  std::vector<double>(trees_.size(), 1.0 / static_cast<double>(trees_.size())));
 }
 
-double RandomForest::Snapshot::variance(const std::vector<float>& input) const {
-  const std::size_t m = trees_.size();
-  if (m < 2) return 0.0;
-  const std::vector<Distribution> p = treePredictions(input);
-  double sum = 0.0;
-  for (std::size_t i = 0; i < m; ++i) {
-    for (std::size_t j = 0; j < m; ++j) {
-      if (i != j) sum += klDivergence(p[i], p[j]);
-    }
+Distribution RandomForest::Snapshot::predict(const std::vector<float>& input) const {
+  if (trees_.empty()) return {{0.0f, 1.0}};  // a default-constructed snapshot
+  switch (combination_) {
+    case Combination::Separate:
+      return trees_[0].leaf(input);
+    case Combination::Best:
+      return trees_[bestTree(accuracy_)].leaf(input);
+    default:
+      break;
   }
-  return sum / static_cast<double>(m * (m - 1)) / kLn100;
+  auto& l = scratchLeaves();
+  leaves(input, &l);
+  return combined(l);
+}
+
+double RandomForest::Snapshot::variance(const std::vector<float>& input) const {
+  if (trees_.size() < 2) return 0.0;
+  auto& l = scratchLeaves();
+  leaves(input, &l);
+  return disagreement(l);
+}
+
+Distribution RandomForest::Snapshot::predict(const std::vector<float>& input,
+                                             double* variance) const {
+  if (trees_.empty()) {
+    *variance = 0.0;
+    return {{0.0f, 1.0}};
+  }
+  auto& l = scratchLeaves();
+  leaves(input, &l);
+  *variance = disagreement(l);
+  return combined(l);
 }
 
 // ------------------------------------------------------------------------------------------

@@ -78,6 +78,9 @@ class C45Tree {
     /// Output frequencies at the leaf `input` falls into; {0: 1} for an empty tree (as the
     /// original). Throws std::invalid_argument if the input length differs from the tree's.
     Distribution predict(const std::vector<float>& input) const;
+    /// The same without a copy: the leaf's own distribution, valid while this snapshot (or a
+    /// copy) lives.
+    const Distribution& leaf(const std::vector<float>& input) const;
     /// Number of nodes (splits and leaves); 0 for an empty tree.
     std::size_t numNodes() const;
     /// Number of splits on the longest root-to-leaf path (0 for a single leaf or empty tree).

@@ -55,6 +55,10 @@ class FactoredModel : public rl_common::MDPModel {
    public:
     /// The prediction with the external reward only (no intrinsic bonuses).
     rl_common::StateActionInfo query(const rl_common::State& input, int action) const override;
+    /// query() and, into `*variance`, variance(): one descent of every tree for both (what
+    /// a planner querying TEXPLORE-VANIR's bonuses needs; the same values as the two calls).
+    rl_common::StateActionInfo query(const rl_common::State& input, int action,
+                                     double* variance) const;
     /// D(s, a) above, in [0, ~1].
     double variance(const rl_common::State& input, int action) const;
     /// The distribution of feature j's prediction (relative change or absolute

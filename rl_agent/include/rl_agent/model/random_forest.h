@@ -57,10 +57,16 @@ class RandomForest {
     std::vector<Distribution> treePredictions(const std::vector<float>& input) const;
     /// D above: the trees' mean pairwise KL divergence / ln 100.
     double variance(const std::vector<float>& input) const;
+    /// predict() and, into `*variance`, variance(), from one descent of each tree (the
+    /// planner's queries need both; the values are the same as from the two calls).
+    Distribution predict(const std::vector<float>& input, double* variance) const;
     std::size_t numTrees() const { return trees_.size(); }
 
    private:
     friend class RandomForest;
+    /// Every tree's leaf distribution for `input`, in tree order, into `leaves`.
+    void leaves(const std::vector<float>& input, std::vector<const Distribution*>* leaves) const;
+    Distribution combined(const std::vector<const Distribution*>& leaves) const;
     std::vector<C45Tree::Snapshot> trees_;
     std::vector<double> accuracy_;
     Combination combination_ = Combination::Average;

@@ -21,6 +21,8 @@ struct BonusContext {
   const NoveltyIndex::Snapshot& visited;  ///< visited state-actions
   const rl_common::State& input;          ///< queried state (plus history features)
   int action;
+  /// model.variance(input, action) when it was computed with the prediction, else null.
+  const double* variance = nullptr;
 };
 
 class IntrinsicReward {
@@ -31,6 +33,9 @@ class IntrinsicReward {
   /// Adds the bonus to `info` (reward and the matching breakdown field).
   /// Thread-safe.
   virtual void apply(const BonusContext& context, rl_common::StateActionInfo* info) const = 0;
+  /// True if apply() reads the model's variance: the model then computes it with the
+  /// prediction, from the same descent of its trees.
+  virtual bool usesVariance() const { return false; }
 };
 
 }  // namespace rl_agent

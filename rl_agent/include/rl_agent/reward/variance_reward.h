@@ -14,8 +14,9 @@ class VarianceReward : public IntrinsicReward {
  public:
   explicit VarianceReward(double v) : v_(v) {}
   std::string name() const override { return "variance"; }
+  bool usesVariance() const override { return true; }
   void apply(const BonusContext& c, rl_common::StateActionInfo* info) const override {
-    const double d = c.model.variance(c.input, c.action);
+    const double d = c.variance != nullptr ? *c.variance : c.model.variance(c.input, c.action);
     if (d <= 0.0) return;
     const float bonus = static_cast<float>(v_ * d);
     info->varianceReward += bonus;
