@@ -24,6 +24,20 @@ bool allFinite(const State& s) {
   return std::all_of(s.begin(), s.end(), [](float x) { return std::isfinite(x); });
 }
 
+// ln(n) for a visit count: a table for the counts UCB meets most (the same values as
+// std::log, which each selection would otherwise call).
+double logOfCount(long n) {
+  constexpr long kTable = 4096;
+  static const std::vector<double> table = [] {
+    std::vector<double> t(kTable);
+    for (long k = 1; k < kTable; ++k)
+      t[static_cast<std::size_t>(k)] = std::log(static_cast<double>(k));
+    return t;
+  }();
+  return n > 0 && n < kTable ? table[static_cast<std::size_t>(n)]
+                             : std::log(static_cast<double>(n));
+}
+
 }  // namespace
 
 UctPlanner::UctPlanner(const Config& config, std::uint64_t seed) : config_(config), rng_(seed) {
@@ -143,13 +157,11 @@ long UctPlanner::plan(const State& s, const rl_common::PlanningBudget& budget) {
 }
 
 int UctPlanner::bestAction(const State& s) {
-  validateState(s, "UctPlanner::bestAction()");
-  buildKey(s, rootHistory_, key_);
-  const auto it = table_.find(key_);
-  if (it == table_.end()) {
+  const Record* found = find(s, "UctPlanner::bestAction()");
+  if (found == nullptr) {
     return rng_.uniformInt(0, config_.numActions - 1);
   }
-  const std::vector<double>& q = it->second.q;
+  const std::vector<double>& q = found->q;
   const double best = *std::max_element(q.begin(), q.end());
   int ties = 0;
   for (double v : q) {
@@ -204,7 +216,9 @@ std::vector<double> UctPlanner::qValues(const State& s) const {
 void UctPlanner::forEachRecord(
     const std::function<void(const State& key, const std::vector<double>& q, long visits)>& f)
     const {
-  for (const auto& [key, record] : table_) f(key, record.q, cappedVisits(record));
+  for (const Record& r : records_) {
+    if (r.live) f(r.key, r.q, cappedVisits(r));
+  }
 }
 
 long UctPlanner::stateVisits(const State& s) const {
@@ -421,14 +435,25 @@ void UctPlanner::buildKey(const State& actual, const std::vector<int>& history, 
 }
 
 UctPlanner::Record& UctPlanner::touch(const State& key) {
-  auto it = table_.find(key);
-  if (it == table_.end()) {
+  const std::uint64_t h = StateHash()(key);
+  const std::uint32_t found =
+      index_.find(h, [&](std::uint32_t slot) { return records_[slot].key == key; });
+  Record* rp = nullptr;
+  if (found == StateIndex::kNone) {
     // Make room: evict least recently touched records, but none touched by this rollout.
-    while (table_.size() >= config_.maxStates && recent_.tail != nullptr &&
+    while (index_.size() >= config_.maxStates && recent_.tail != nullptr &&
            recent_.tail->lastTouched != stamp_) {
       evictRecord(*recent_.tail);
     }
-    Record r;
+    if (freeSlots_.empty()) {
+      records_.emplace_back();
+      records_.back().slot = static_cast<std::uint32_t>(records_.size() - 1);
+      rp = &records_.back();
+    } else {
+      rp = &records_[freeSlots_.back()];
+      freeSlots_.pop_back();
+    }
+    Record& r = *rp;
     r.q.resize(static_cast<std::size_t>(config_.numActions));
     for (double& q : r.q) {
       q = rng_.uniform(0.0, 0.01);
@@ -437,11 +462,16 @@ UctPlanner::Record& UctPlanner::touch(const State& key) {
     if (trackPath_) {
       r.pathChosen.assign(static_cast<std::size_t>(config_.numActions), 0);
     }
+    r.visits = 1;
     r.version = modelVersion_;
-    it = table_.emplace(key, std::move(r)).first;
-    it->second.key = &it->first;  // nodes are stable: the key's address stays valid
+    r.onPath = 0;
+    r.key = key;
+    r.hash = h;
+    r.live = true;
+    index_.insert(h, r.slot);
   } else {
-    Record& r = it->second;
+    Record& r = records_[found];
+    rp = &r;
     if (r.version != modelVersion_) {
       r.visits = cappedVisits(r);
       for (int a = 0; a < config_.numActions; ++a) {
@@ -451,7 +481,7 @@ UctPlanner::Record& UctPlanner::touch(const State& key) {
     }
     unlink(recent_, &Record::recent, r);
   }
-  Record& r = it->second;
+  Record& r = *rp;
   r.lastTouched = stamp_;
   pushFront(recent_, &Record::recent, r);
   return r;
@@ -461,8 +491,9 @@ const UctPlanner::Record* UctPlanner::find(const State& s, const char* where) co
   validateState(s, where);
   State key;
   buildKey(s, rootHistory_, key);
-  const auto it = table_.find(key);
-  return it == table_.end() ? nullptr : &it->second;
+  const std::uint32_t slot =
+      index_.find(StateHash()(key), [&](std::uint32_t i) { return records_[i].key == key; });
+  return slot == StateIndex::kNone ? nullptr : &records_[slot];
 }
 
 int UctPlanner::selectUcbAction(const Record& r) {
@@ -471,7 +502,7 @@ int UctPlanner::selectUcbAction(const Record& r) {
   if (r.onPath > 0 && config_.countPathVisits) {
     for (int k : r.pathChosen) onPath += k;
   }
-  const double logN = std::log(static_cast<double>(r.visits + onPath));
+  const double logN = logOfCount(r.visits + onPath);
   values_.resize(static_cast<std::size_t>(config_.numActions));
   double best = -std::numeric_limits<double>::infinity();
   int ties = 0;
@@ -537,8 +568,9 @@ const StateActionInfo& UctPlanner::prediction(Record& r, const State& key, int a
 void UctPlanner::evictRecord(Record& r) {
   dropPredictions(r);
   unlink(recent_, &Record::recent, r);
-  const State key = *r.key;  // a copy: erasing must not read the node it frees
-  table_.erase(key);
+  index_.erase(r.hash, r.slot);
+  r.live = false;
+  freeSlots_.push_back(r.slot);
 }
 
 void UctPlanner::dropPredictions(Record& r) {

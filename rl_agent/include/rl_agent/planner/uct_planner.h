@@ -49,14 +49,15 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <memory>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
 #include "rl_agent/planner/state_grid.h"
 #include "rl_agent/planner/state_hash.h"
+#include "rl_agent/planner/state_index.h"
 #include "rl_common/mdp_model.h"
 #include "rl_common/planner.h"
 #include "rl_common/random.h"
@@ -171,7 +172,7 @@ class UctPlanner : public rl_common::Planner {
                                               const std::vector<double>& q, long visits)>& f) const;
 
   /// Number of state records.
-  std::size_t numStates() const { return table_.size(); }
+  std::size_t numStates() const { return index_.size(); }
   /// Number of cached model predictions.
   std::size_t numCachedPredictions() const { return cachedPredictions_; }
   /// Number of setModel() calls so far.
@@ -202,17 +203,19 @@ class UctPlanner : public rl_common::Planner {
     std::vector<double> q;
     std::vector<long> actionVisits;
     long visits = 1;
-    std::uint64_t version = 0;              // model version whose count cap has been applied
-    std::uint64_t lastTouched = 0;          // rollout stamp: records of the current rollout stay
-    int onPath = 0;                         // occurrences on the current rollout's path
-    std::vector<int> pathChosen;            // per action: chosen on the path (trackPath_)
-    int cached = 0;                         // predictions cached (version != 0)
-    std::vector<Prediction> predictions;    // empty, or A entries
-    const rl_common::State* key = nullptr;  // the table's key of this record
-    Links recent;                           // in recent_: every record
-    Links cachedRecent;                     // in cachedRecent_: records with cached > 0
+    std::uint64_t version = 0;            // model version whose count cap has been applied
+    std::uint64_t lastTouched = 0;        // rollout stamp: records of the current rollout stay
+    int onPath = 0;                       // occurrences on the current rollout's path
+    std::vector<int> pathChosen;          // per action: chosen on the path (trackPath_)
+    int cached = 0;                       // predictions cached (version != 0)
+    std::vector<Prediction> predictions;  // empty, or A entries
+    rl_common::State key;                 // the record's key (the model's query input)
+    std::uint64_t hash = 0;               // StateHash of key
+    std::uint32_t slot = 0;               // index in records_
+    bool live = false;                    // false: a free slot
+    Links recent;                         // in recent_: every record
+    Links cachedRecent;                   // in cachedRecent_: records with cached > 0
   };
-  using Table = std::unordered_map<rl_common::State, Record, StateHash>;
 
   struct Step {
     Record* record;
@@ -255,7 +258,11 @@ class UctPlanner : public rl_common::Planner {
   std::shared_ptr<const rl_common::ModelView> model_;
   std::uint64_t modelVersion_ = 0;
   std::uint64_t stamp_ = 0;
-  Table table_;
+  // The records, in slots that are reused after an eviction (a deque: addresses stay valid),
+  // and the hash index over their keys.
+  std::deque<Record> records_;
+  std::vector<std::uint32_t> freeSlots_;
+  StateIndex index_;
   List recent_;        // every record, most recently touched first
   List cachedRecent_;  // records holding predictions, most recently used first
   std::size_t cachedPredictions_ = 0;
