@@ -3,9 +3,10 @@
 //   agent_benchmark fixed [--steps 5000] [--rollouts 100] [--seed 1]
 //       synchronous mode: per-step model-update time, planning rollouts per second and peak
 //       memory, reported at 1000 steps and at the end
-//   agent_benchmark realtime [--steps 500] [--actrate 10] [--seed 1]
+//   agent_benchmark realtime [--steps 500] [--actrate 10] [--searchthreads 0] [--seed 1]
 //       the real-time (RTMBA) agent: rollouts completed per action (median, p10, p90) and the
-//       interval between actions (median, p99, max)
+//       interval between actions (median, p99, max); with more than one search thread (0: one
+//       per core) it runs the single-thread agent first, in the same run, and prints the ratio
 //
 // Prints figures only; never a pass/fail verdict.
 #include <sys/resource.h>
@@ -44,7 +45,7 @@ struct Setup {
   std::unique_ptr<rl_agent::ModelBasedAgent> agent;
 };
 
-Setup makeSetup(std::uint64_t seed, long rollouts, float actrate) {
+Setup makeSetup(std::uint64_t seed, long rollouts, float actrate, int searchThreads = 0) {
   rl_env::EnvironmentOptions eo;
   eo.env = "lightworld";
   eo.seed = seed;
@@ -58,6 +59,7 @@ Setup makeSetup(std::uint64_t seed, long rollouts, float actrate) {
   ao.seed = seed + 1;
   ao.rollouts = rollouts;
   ao.actrate = actrate;
+  ao.searchthreads = searchThreads;
   s.agent = std::make_unique<rl_agent::ModelBasedAgent>(ao, s.env->describe());
   s.agent->seedExperiences(s.env->seedExperiences());
   return s;
@@ -86,8 +88,12 @@ void fixedMode(int steps, long rollouts, std::uint64_t seed) {
   }
 }
 
-void realTimeMode(int steps, float actrate, std::uint64_t seed) {
-  Setup s = makeSetup(seed, 0, actrate);
+struct RealTimeFigures {
+  double medianRollouts = 0.0;
+};
+
+RealTimeFigures realTimeRun(int steps, float actrate, std::uint64_t seed, int threads) {
+  Setup s = makeSetup(seed, 0, actrate, threads);
   std::vector<double> rollouts, intervals;
   float r = s.env->apply(s.agent->firstAction(s.env->sensation()));
   auto last = Clock::now();
@@ -98,12 +104,30 @@ void realTimeMode(int steps, float actrate, std::uint64_t seed) {
     last = now;
     rollouts.push_back(static_cast<double>(s.agent->lastRollouts()));
   }
-  std::printf("real-time mode: LightWorld, texplore v=1 n=3, %.0f Hz, %d steps\n", actrate, steps);
+  std::printf(
+      "real-time mode: LightWorld, texplore v=1 n=3, %.0f Hz, %d steps, %d search thread%s\n",
+      actrate, steps, threads, threads == 1 ? "" : "s");
   std::printf("rollouts per action: median %.0f  p10 %.0f  p90 %.0f\n", quantile(rollouts, 0.5),
               quantile(rollouts, 0.1), quantile(rollouts, 0.9));
   std::printf("step interval ms:    median %.1f  p99 %.1f  max %.1f\n", quantile(intervals, 0.5),
               quantile(intervals, 0.99), quantile(intervals, 1.0));
-  std::printf("peak memory MB:      %.1f\n", peakRssMb());
+  std::printf("peak memory MB:      %.1f (this process so far)\n", peakRssMb());
+  std::fflush(stdout);
+  return {quantile(rollouts, 0.5)};
+}
+
+void realTimeMode(int steps, float actrate, std::uint64_t seed, int searchThreads) {
+  rl_agent::AgentOptions resolved;
+  resolved.searchthreads = searchThreads;
+  const int threads = rl_agent::searchThreads(resolved);
+  if (threads == 1) {
+    realTimeRun(steps, actrate, seed, 1);
+    return;
+  }
+  const RealTimeFigures one = realTimeRun(steps, actrate, seed, 1);
+  const RealTimeFigures many = realTimeRun(steps, actrate, seed, threads);
+  std::printf("rollouts per action, %d threads against 1 (median): %.2fx\n", threads,
+              one.medianRollouts > 0 ? many.medianRollouts / one.medianRollouts : 0.0);
 }
 
 }  // namespace
@@ -111,7 +135,7 @@ void realTimeMode(int steps, float actrate, std::uint64_t seed) {
 int main(int argc, char** argv) {
   if (argc < 2 || (std::string(argv[1]) != "fixed" && std::string(argv[1]) != "realtime")) {
     std::cerr << "usage: agent_benchmark {fixed|realtime} [--steps N] [--rollouts N] "
-                 "[--actrate HZ] [--seed N]\n";
+                 "[--actrate HZ] [--searchthreads K] [--seed N]\n";
     return 2;
   }
   const bool fixed = std::string(argv[1]) == "fixed";
@@ -119,10 +143,14 @@ int main(int argc, char** argv) {
   long rollouts = 100;
   float actrate = 10.0f;
   unsigned long seed = 1;
+  int searchThreads = 0;
   rl_common::OptionParser p("agent_benchmark", "{fixed|realtime} [options]");
   p.value("steps", &steps, "steps to run", rl_common::greaterThan(0));
   p.value("rollouts", &rollouts, "rollouts per step (fixed mode)", rl_common::greaterThan(0L));
   p.value("actrate", &actrate, "actions per second (real-time mode)", rl_common::greaterThan(0.0f));
+  p.value("searchthreads", &searchThreads,
+          "real-time mode: search threads (0: one per core); more than 1 also runs 1 first",
+          rl_common::inRange(0, rl_agent::kMaxSearchThreads));
   p.value("seed", &seed, "seed");
   try {
     if (!p.parse(argc - 1, argv + 1)) {
@@ -132,7 +160,7 @@ int main(int argc, char** argv) {
     if (fixed) {
       fixedMode(steps, rollouts, seed);
     } else {
-      realTimeMode(steps, actrate, seed);
+      realTimeMode(steps, actrate, seed, searchThreads);
     }
   } catch (const std::exception& e) {
     std::cerr << "agent_benchmark: " << e.what() << "\n";

@@ -1,6 +1,7 @@
 #include "rl_agent/agent/agent_options.h"
 
 #include <algorithm>
+#include <thread>
 #include <vector>
 
 #include "rl_common/registry.h"
@@ -118,7 +119,16 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
           "UCT rollouts per step, planned synchronously for reproducible runs (0: plan in real "
           "time at --actrate)",
           atLeast(0L));
+  p.value("searchthreads", &o->searchthreads,
+          "real-time UCT: planning threads, each searching its own tree, whose root values are "
+          "averaged (0: one per core)",
+          inRange(0, kMaxSearchThreads));
   p.value("tau", &o->tau, "Boltzmann temperature (--explore boltzmann)", greaterThan(0.0f));
+}
+
+int searchThreads(const AgentOptions& o) {
+  if (o.searchthreads > 0) return o.searchthreads;
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
 bool binsStates(const AgentOptions& o) {
@@ -192,11 +202,11 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
   lambdaAgents.push_back("sarsa");
   requireAgent(p, o, "lambda", lambdaAgents);
   for (const char* option :
-       {"actrate",  "m",           "model",      "planner",   "combo",       "nmodels",
-        "reltrans", "abstrans",    "v",          "n",         "history",     "rollouts",
-        "tau",      "pathvisits",  "ucb",        "ucbc",      "bonusonce",   "taskucb",
-        "taskucbc", "depth",       "minprob",    "novelty",   "taskplanner", "taskdepth",
-        "taskkey",  "taskminprob", "tasksweeps", "taskrecent"}) {
+       {"actrate",  "m",           "model",      "planner",    "combo",        "nmodels",
+        "reltrans", "abstrans",    "v",          "n",          "history",      "rollouts",
+        "tau",      "pathvisits",  "ucb",        "ucbc",       "bonusonce",    "taskucb",
+        "taskucbc", "depth",       "minprob",    "novelty",    "taskplanner",  "taskdepth",
+        "taskkey",  "taskminprob", "tasksweeps", "taskrecent", "searchthreads"}) {
     requireAgent(p, o, option, kModelBased);
   }
   const bool modelBased = isOneOf(o.agent, kModelBased);
@@ -210,6 +220,12 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
                                      "delayed-parallel-uct), not '" +
                                      o.planner + "'");
       }
+    }
+    if (p.given("searchthreads") &&
+        (o.rollouts > 0 || (o.planner != "parallel-uct" && o.planner != "delayed-parallel-uct"))) {
+      throw rl_common::OptionError(
+          "option --searchthreads needs the real-time planner (--planner parallel-uct or "
+          "delayed-parallel-uct, without --rollouts)");
     }
     if (o.taskplanner == "vi" && o.history > 0) {
       throw rl_common::OptionError(

@@ -51,6 +51,12 @@ FactoredModel::Config modelConfig(const AgentOptions& o,
   return c;
 }
 
+RealTimePlanner::Config realTimeConfig(std::uint64_t plannerSeed) {
+  RealTimePlanner::Config c;
+  c.seed = rl_common::Random::deriveSeed(plannerSeed, "search-ties");
+  return c;
+}
+
 UctPlanner::Config plannerConfig(const AgentOptions& o,
                                  const rl_common::EnvironmentDescription& t) {
   UctPlanner::Config c;
@@ -220,7 +226,16 @@ ModelBasedAgent::ModelBasedAgent(const AgentOptions& options,
   history_.clear();
   if (isRealTimeUct(options.planner) && options.rollouts == 0) {
     uct_ = nullptr;  // owned and serialised by realTime_ from now on
-    realTime_ = std::make_unique<RealTimePlanner>(std::move(model), std::move(planner));
+    // Root-parallel search: tree 0 keeps the planner's seed, the others get streams of their own.
+    std::vector<std::unique_ptr<rl_common::Planner>> planners;
+    planners.push_back(std::move(planner));
+    for (int k = 1; k < searchThreads(options); ++k) {
+      planners.push_back(std::make_unique<UctPlanner>(
+          plannerConfig(options, task),
+          rl_common::Random::deriveSeed(plannerSeed, "search", static_cast<std::uint64_t>(k))));
+    }
+    realTime_ = std::make_unique<RealTimePlanner>(std::move(model), std::move(planners),
+                                                  realTimeConfig(plannerSeed));
   } else {
     planner->setModel(model->view());
     model_ = std::move(model);
@@ -243,11 +258,10 @@ rl_common::State ModelBasedAgent::binned(const rl_common::State& s) const { retu
 rl_common::State ModelBasedAgent::modelInput(const rl_common::State& s) {
   if (options_.history == 0) return s;
   if (realTime_) {
-    return realTime_->withPlanner([&](rl_common::Planner& p) {
-      auto& uct = static_cast<UctPlanner&>(p);
-      uct.setActionHistory(history_);
-      return uct.modelInput(s);
-    });
+    realTime_->forEachPlanner(
+        [&](rl_common::Planner& p) { static_cast<UctPlanner&>(p).setActionHistory(history_); });
+    return realTime_->withPlanner(
+        [&](rl_common::Planner& p) { return static_cast<UctPlanner&>(p).modelInput(s); });
   }
   uct_->setActionHistory(history_);
   return uct_->modelInput(s);
@@ -325,8 +339,7 @@ int ModelBasedAgent::planTaskStep(const rl_common::State& s) {
 std::vector<double> ModelBasedAgent::plannerValues(const rl_common::State& s) {
   if (taskPlannerActive() && taskPlanner_) return taskPlanner_->qValues(s);
   if (realTime_) {
-    return realTime_->withPlanner(
-        [&](rl_common::Planner& p) { return static_cast<UctPlanner&>(p).qValues(s); });
+    return realTime_->qValues(s);
   }
   if (uct_ != nullptr) return uct_->qValues(s);
   return dp_->qValues(s);
@@ -432,10 +445,8 @@ void ModelBasedAgent::applyUcbBound() {
       name == "normalized" ? UctPlanner::UcbBound::Normalized : UctPlanner::UcbBound::Range;
   const double c = task ? options_.taskucbc : options_.ucbc;
   if (realTime_) {
-    realTime_->withPlanner([&](rl_common::Planner& p) {
-      static_cast<UctPlanner&>(p).setUcbBound(bound, c);
-      return 0;
-    });
+    realTime_->forEachPlanner(
+        [&](rl_common::Planner& p) { static_cast<UctPlanner&>(p).setUcbBound(bound, c); });
   } else if (uct_ != nullptr) {
     uct_->setUcbBound(bound, c);
   }
@@ -468,8 +479,12 @@ void ModelBasedAgent::relabelRewards(const std::vector<float>& rewards) {
     replay.push_back(r.experience);
   }
   taskPlanner_.reset();  // its snapshot is of the model before the new rewards
-  std::unique_ptr<rl_common::Planner> planner =
-      realTime_ ? realTime_->releasePlanner() : std::move(planner_);
+  std::vector<std::unique_ptr<rl_common::Planner>> planners;
+  if (realTime_) {
+    planners = realTime_->releasePlanners();
+  } else {
+    planners.push_back(std::move(planner_));
+  }
   realTime_.reset();
   model_.reset();
   std::unique_ptr<rl_common::MDPModel> model = makeModel();
@@ -477,8 +492,11 @@ void ModelBasedAgent::relabelRewards(const std::vector<float>& rewards) {
   if (exploration_ != nullptr) exploration_->setIntrinsicEnabled(exploring_);
   if (tabular_ != nullptr) tabular_->setOptimistic(exploring_);
   if (isRealTimeUct(options_.planner) && options_.rollouts == 0) {
-    realTime_ = std::make_unique<RealTimePlanner>(std::move(model), std::move(planner));
+    realTime_ = std::make_unique<RealTimePlanner>(
+        std::move(model), std::move(planners),
+        realTimeConfig(rl_common::Random::deriveSeed(options_.seed, "planner")));
   } else {
+    std::unique_ptr<rl_common::Planner> planner = std::move(planners.front());
     planner->setModel(model->view());
     model_ = std::move(model);
     planner_ = std::move(planner);
@@ -532,7 +550,9 @@ void ModelBasedAgent::savePolicy(const std::string& filename) {
       });
     };
     if (realTime_) {
-      realTime_->withPlanner([&](rl_common::Planner& p) { collect(static_cast<UctPlanner&>(p)); });
+      // Every search tree: a state keeps the values of its most visited record.
+      realTime_->forEachPlanner(
+          [&](rl_common::Planner& p) { collect(static_cast<UctPlanner&>(p)); });
     } else if (uct_ != nullptr) {
       collect(*uct_);
     } else {

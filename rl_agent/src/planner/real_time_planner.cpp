@@ -1,5 +1,6 @@
 #include "rl_agent/planner/real_time_planner.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -12,14 +13,36 @@ RealTimePlanner::RealTimePlanner(std::unique_ptr<rl_common::MDPModel> model,
                                  std::unique_ptr<rl_common::Planner> planner)
     : RealTimePlanner(std::move(model), std::move(planner), Config()) {}
 
+namespace {
+
+std::vector<std::unique_ptr<rl_common::Planner>> one(std::unique_ptr<rl_common::Planner> p) {
+  std::vector<std::unique_ptr<rl_common::Planner>> v;
+  v.push_back(std::move(p));
+  return v;
+}
+
+}  // namespace
+
 RealTimePlanner::RealTimePlanner(std::unique_ptr<rl_common::MDPModel> model,
                                  std::unique_ptr<rl_common::Planner> planner, const Config& config)
-    : config_(config), model_(std::move(model)), planner_(std::move(planner)) {
+    : RealTimePlanner(std::move(model), one(std::move(planner)), config) {}
+
+RealTimePlanner::RealTimePlanner(std::unique_ptr<rl_common::MDPModel> model,
+                                 std::vector<std::unique_ptr<rl_common::Planner>> planners,
+                                 const Config& config)
+    : config_(config),
+      model_(std::move(model)),
+      planners_(std::move(planners)),
+      tieRng_(config.seed) {
   if (!model_) {
     throw std::invalid_argument("RealTimePlanner::RealTimePlanner(): model is null");
   }
-  if (!planner_) {
-    throw std::invalid_argument("RealTimePlanner::RealTimePlanner(): planner is null");
+  if (planners_.empty()) {
+    throw std::invalid_argument("RealTimePlanner::RealTimePlanner(): no planner");
+  }
+  for (const auto& p : planners_) {
+    if (!p) throw std::invalid_argument("RealTimePlanner::RealTimePlanner(): planner is null");
+    mutexes_.push_back(std::make_unique<std::mutex>());
   }
   if (config_.rolloutsPerSlice < 1) {
     throw std::invalid_argument(
@@ -30,11 +53,13 @@ RealTimePlanner::RealTimePlanner(std::unique_ptr<rl_common::MDPModel> model,
   if (!latestView_) {
     throw std::invalid_argument("RealTimePlanner::RealTimePlanner(): the model's view is null");
   }
-  planner_->setModel(latestView_);
+  for (auto& p : planners_) p->setModel(latestView_);
   // No worker runs yet, so the members above need no lock; thread creation orders them.
   modelThread_ = std::thread(&RealTimePlanner::modelLoop, this);
   try {
-    planThread_ = std::thread(&RealTimePlanner::planLoop, this);
+    for (std::size_t k = 0; k < planners_.size(); ++k) {
+      planThreads_.emplace_back(&RealTimePlanner::planLoop, this, k);
+    }
   } catch (...) {
     {
       std::lock_guard<std::mutex> lock(control_);
@@ -42,6 +67,7 @@ RealTimePlanner::RealTimePlanner(std::unique_ptr<rl_common::MDPModel> model,
     }
     notifyAll();
     modelThread_.join();
+    for (auto& t : planThreads_) t.join();
     throw;
   }
 }
@@ -102,7 +128,26 @@ int RealTimePlanner::act(const State& s, std::chrono::steady_clock::time_point d
       throw std::runtime_error("RealTimePlanner::act(): the planner was stopped");
     }
   }
-  const int action = withPlanner([&s](rl_common::Planner& p) { return p.bestAction(s); });
+  int action;
+  if (planners_.size() == 1) {
+    action = withPlanner([&s](rl_common::Planner& p) { return p.bestAction(s); });
+  } else {
+    PlannerAccess all(*this, 0, planners_.size());
+    const std::vector<double> q = meanValues(s);
+    if (q.empty()) {
+      action = planners_[0]->bestAction(s);
+    } else {
+      // Near-equal values are ties, as in UctPlanner::bestAction.
+      const double best = *std::max_element(q.begin(), q.end());
+      std::vector<int> ties;
+      for (std::size_t a = 0; a < q.size(); ++a) {
+        if (q[a] >= best - 1e-4) ties.push_back(static_cast<int>(a));
+      }
+      action = ties[ties.size() > 1 ? static_cast<std::size_t>(
+                                          tieRng_.uniformInt(0, static_cast<int>(ties.size()) - 1))
+                                    : 0];
+    }
+  }
   const long total = rollouts_.load();
   lastActRollouts_.store(total - rolloutsAtLastAct_.exchange(total));
   return action;
@@ -118,17 +163,35 @@ void RealTimePlanner::stop() {
   if (modelThread_.joinable()) {
     modelThread_.join();
   }
-  if (planThread_.joinable()) {
-    planThread_.join();
+  for (auto& t : planThreads_) {
+    if (t.joinable()) t.join();
   }
   std::lock_guard<std::mutex> lock(control_);
   rethrowUnreportedLocked();
 }
 
-std::unique_ptr<rl_common::Planner> RealTimePlanner::releasePlanner() {
-  stop();
-  std::lock_guard<std::mutex> lock(plannerMutex_);
-  return std::move(planner_);
+std::vector<std::unique_ptr<rl_common::Planner>> RealTimePlanner::releasePlanners() {
+  stop();  // every worker is joined: no lock is needed
+  return std::move(planners_);
+}
+
+std::vector<double> RealTimePlanner::meanValues(const State& s) const {
+  std::vector<double> sum;
+  int trees = 0;
+  for (const auto& p : planners_) {
+    const std::vector<double> q = p->qValues(s);
+    if (q.empty() || (!sum.empty() && q.size() != sum.size())) continue;
+    if (sum.empty()) sum.assign(q.size(), 0.0);
+    for (std::size_t a = 0; a < q.size(); ++a) sum[a] += q[a];
+    ++trees;
+  }
+  for (double& v : sum) v /= trees;
+  return sum;
+}
+
+std::vector<double> RealTimePlanner::qValues(const State& s) {
+  PlannerAccess all(*this, 0, planners_.size());
+  return meanValues(s);
 }
 
 bool RealTimePlanner::running() const {
@@ -141,14 +204,17 @@ std::shared_ptr<const rl_common::ModelView> RealTimePlanner::latestView() const 
   return latestView_;
 }
 
-RealTimePlanner::PlannerAccess::PlannerAccess(RealTimePlanner& owner) : owner_(owner) {
+RealTimePlanner::PlannerAccess::PlannerAccess(RealTimePlanner& owner, std::size_t first,
+                                              std::size_t count)
+    : owner_(owner) {
   {
     std::lock_guard<std::mutex> lock(owner_.control_);
     ++owner_.priorityWaiters_;
   }
   try {
-    lock_ = std::unique_lock<std::mutex>(owner_.plannerMutex_);
+    for (std::size_t k = first; k < first + count; ++k) locks_.emplace_back(*owner_.mutexes_[k]);
   } catch (...) {
+    locks_.clear();
     {
       std::lock_guard<std::mutex> lock(owner_.control_);
       --owner_.priorityWaiters_;
@@ -159,7 +225,7 @@ RealTimePlanner::PlannerAccess::PlannerAccess(RealTimePlanner& owner) : owner_(o
 }
 
 RealTimePlanner::PlannerAccess::~PlannerAccess() {
-  lock_.unlock();  // release the planner before taking control_
+  locks_.clear();  // release the planners before taking control_
   {
     std::lock_guard<std::mutex> lock(owner_.control_);
     --owner_.priorityWaiters_;
@@ -191,7 +257,7 @@ void RealTimePlanner::modelLoop() {
       if (!view) {
         throw std::runtime_error("RealTimePlanner: the model returned a null view");
       }
-      withPlanner([&view](rl_common::Planner& p) { p.setModel(view); });
+      forEachPlanner([&view](rl_common::Planner& p) { p.setModel(view); });
       std::lock_guard<std::mutex> lock(control_);
       latestView_ = std::move(view);
     }
@@ -200,7 +266,7 @@ void RealTimePlanner::modelLoop() {
   }
 }
 
-void RealTimePlanner::planLoop() {
+void RealTimePlanner::planLoop(std::size_t index) {
   try {
     State root;
     std::uint64_t seen = 0;
@@ -219,8 +285,8 @@ void RealTimePlanner::planLoop() {
       }
       long done;
       {
-        std::lock_guard<std::mutex> lock(plannerMutex_);
-        done = planner_->plan(root, budget);
+        std::lock_guard<std::mutex> lock(*mutexes_[index]);
+        done = planners_[index]->plan(root, budget);
       }
       rollouts_.fetch_add(done);
     }

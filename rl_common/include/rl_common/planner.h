@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <memory>
+#include <vector>
 
 #include "rl_common/experience.h"
 #include "rl_common/mdp_model.h"
@@ -43,6 +44,9 @@ class Planner {
   virtual long plan(const State& s, const PlanningBudget& budget) = 0;
   /// The greedy action in `s` (random tie-break among near-equal values).
   virtual int bestAction(const State& s) = 0;
+  /// The action values in `s` (empty if the planner has none for it, or keeps none). Root-
+  /// parallel search combines its trees' values with it.
+  virtual std::vector<double> qValues(const State& /*s*/) const { return {}; }
 };
 
 }  // namespace rl_common

@@ -38,7 +38,10 @@ struct AgentOptions {
   int k = 1000;          ///< Dyna model updates per step
   std::string filename;  ///< policy file (savedpolicy reads it; others write it at shutdown)
   long rollouts = 0;     ///< UCT rollouts per step, synchronously (0: real time at actrate)
-  float tau = 0.2f;      ///< Boltzmann temperature (--explore boltzmann; 0.2 in the paper)
+  /// Real-time UCT: planning threads, each searching its own tree (root-parallel search);
+  /// 0: one per core (the model thread beside them is idle most of the time).
+  int searchthreads = 0;
+  float tau = 0.2f;  ///< Boltzmann temperature (--explore boltzmann; 0.2 in the paper)
   /// UCT: count the path's choices at a state met again on a rollout (UctPlanner::Config::
   /// countPathVisits); off by default, as the original.
   bool pathvisits = false;
@@ -73,6 +76,11 @@ struct AgentOptions {
 
 /// True if --nstates bins some feature.
 bool binsStates(const AgentOptions& options);
+
+/// The most planning threads --searchthreads takes.
+constexpr int kMaxSearchThreads = 64;
+/// --searchthreads resolved: the option, or one per core (at least 1) for 0.
+int searchThreads(const AgentOptions& o);
 
 /// Throws std::invalid_argument unless --nstates has one entry or `numFeatures` entries.
 void checkStatesPerDim(const AgentOptions& options, std::size_t numFeatures);

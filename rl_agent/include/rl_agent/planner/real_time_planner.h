@@ -13,15 +13,19 @@
  *    updates the MDPModel with the batch outside every lock the other threads use, then hands
  *    model->view() (an immutable view sharing structure with the learner, never a deep copy)
  *    to the planner with setModel().
- *  - planning (a worker): repeatedly runs a small budget of rollouts (`rolloutsPerSlice`) from
- *    the latest published root.
+ *  - planning (K workers): each repeatedly runs a small budget of rollouts (`rolloutsPerSlice`)
+ *    from the latest published root on its own planner. With K > 1 this is root-parallel
+ *    search (Chaslot, Winands & van den Herik, "Parallel Monte-Carlo Tree Search", CG 2008):
+ *    independent trees with their own seeds, whose root values act() averages; the trees
+ *    share only the immutable model view, so the threads never wait for each other.
  *
- * Locking: `planner_` is only touched under `plannerMutex_` (a slice of rollouts, setModel,
- * bestAction, withPlanner). Short calls (bestAction, setModel, withPlanner) announce
- * themselves first, and the planning thread stops taking new slices until they are through, so
- * they wait for at most one slice. The queue, the root, the stop flag and the first worker
- * error live under `control_`; no thread holds `control_` while waiting for `plannerMutex_`.
- * The learner (`model_`) is touched by the model-learning thread only.
+ * Locking: planner k is only touched under its mutex (a slice of rollouts, setModel,
+ * bestAction, withPlanner). Short calls (act's choice, setModel, withPlanner, forEachPlanner)
+ * announce themselves first, and the planning threads stop taking new slices until they are
+ * through, so they wait for at most one slice. A call that needs several planners locks them
+ * in index order. The queue, the root, the stop flag and the first worker error live under
+ * `control_`; no thread holds `control_` while waiting for a planner's mutex. The learner
+ * (`model_`) is touched by the model-learning thread only.
  *
  * Failures: the first exception thrown in a worker stops both workers and is rethrown, once, to
  * the next caller of act() or stop(); after that act() throws std::runtime_error. stop() and the
@@ -44,13 +48,15 @@
 #include "rl_common/experience.h"
 #include "rl_common/mdp_model.h"
 #include "rl_common/planner.h"
+#include "rl_common/random.h"
 
 namespace rl_agent {
 
 class RealTimePlanner {
  public:
   struct Config {
-    long rolloutsPerSlice = 1;  ///< rollouts the planning thread runs per hold of the planner
+    long rolloutsPerSlice = 1;  ///< rollouts a planning thread runs per hold of its planner
+    std::uint64_t seed = 0;     ///< ties between the averaged values of several trees
   };
 
   /// Starts the two worker threads after handing the planner the model's initial view.
@@ -59,6 +65,10 @@ class RealTimePlanner {
                   std::unique_ptr<rl_common::Planner> planner);
   RealTimePlanner(std::unique_ptr<rl_common::MDPModel> model,
                   std::unique_ptr<rl_common::Planner> planner, const Config& config);
+  /// One planning thread per planner (root-parallel search). Throws std::invalid_argument for
+  /// an empty list or a null planner too.
+  RealTimePlanner(std::unique_ptr<rl_common::MDPModel> model,
+                  std::vector<std::unique_ptr<rl_common::Planner>> planners, const Config& config);
   /// stop(), swallowing a worker's error that nobody collected.
   ~RealTimePlanner();
 
@@ -72,8 +82,10 @@ class RealTimePlanner {
   void addExperiences(const std::vector<rl_common::Experience>& experiences);
 
   /// Makes `s` the planning root, waits until `deadline` while the workers plan and learn,
-  /// then returns the greedy action in `s`. A deadline in the past returns at once. Rethrows a
-  /// worker's exception; throws std::runtime_error once stopped.
+  /// then returns the greedy action in `s`: the planner's, or with several planners the best of
+  /// their averaged values in `s` (ties at random; planner 0's choice if none has values). A
+  /// deadline in the past returns at once. Rethrows a worker's exception; throws
+  /// std::runtime_error once stopped. Call it from one thread.
   int act(const rl_common::State& s, std::chrono::steady_clock::time_point deadline);
 
   /// Stops and joins both workers; idempotent and safe from any thread (not from inside
@@ -81,17 +93,32 @@ class RealTimePlanner {
   void stop();
   /// False once stop() was called or a worker failed.
   bool running() const;
-  /// stop(), then hands the planner back (e.g. to plan on a rebuilt model); the model is
-  /// dropped. Afterwards act() and withPlanner() must not be called.
-  std::unique_ptr<rl_common::Planner> releasePlanner();
+  /// stop(), then hands the planners back (e.g. to plan on a rebuilt model); the model is
+  /// dropped. Afterwards act(), withPlanner() and forEachPlanner() must not be called.
+  std::vector<std::unique_ptr<rl_common::Planner>> releasePlanners();
 
-  /// Calls f(planner) with exclusive access to the planner, e.g. to set an action history or
-  /// read values; the planning thread pauses after its current slice. Returns f's result.
+  /// Calls f(planner) with exclusive access to planner 0 (the only one unless several were
+  /// given), e.g. to read values; the planning threads pause after their current slice.
+  /// Returns f's result.
   template <class F>
   decltype(auto) withPlanner(F&& f) {
-    PlannerAccess access(*this);
-    return std::forward<F>(f)(*planner_);
+    PlannerAccess access(*this, 0, 1);
+    return std::forward<F>(f)(*planners_[0]);
   }
+  /// Calls f(planner) for every planner in turn, each with exclusive access, e.g. to set the
+  /// action history of every search tree.
+  template <class F>
+  void forEachPlanner(F&& f) {
+    for (std::size_t k = 0; k < planners_.size(); ++k) {
+      PlannerAccess access(*this, k, 1);
+      f(*planners_[k]);
+    }
+  }
+  /// The action values in `s`: the planner's, or the mean over the planners that have values
+  /// for `s` (empty if none has).
+  std::vector<double> qValues(const rl_common::State& s);
+  /// Number of planners, each with its planning thread.
+  std::size_t numSearchThreads() const { return planners_.size(); }
 
   /// The model view the planner plans on now (the initial view before any update).
   std::shared_ptr<const rl_common::ModelView> latestView() const;
@@ -110,29 +137,33 @@ class RealTimePlanner {
   const Config& config() const { return config_; }
 
  private:
-  /// Exclusive, prioritised access to the planner for the duration of a scope.
+  /// Exclusive, prioritised access to planners first .. first+count-1 for a scope (locked in
+  /// index order).
   class PlannerAccess {
    public:
-    explicit PlannerAccess(RealTimePlanner& owner);
+    PlannerAccess(RealTimePlanner& owner, std::size_t first, std::size_t count);
     ~PlannerAccess();
     PlannerAccess(const PlannerAccess&) = delete;
     PlannerAccess& operator=(const PlannerAccess&) = delete;
 
    private:
     RealTimePlanner& owner_;
-    std::unique_lock<std::mutex> lock_;
+    std::vector<std::unique_lock<std::mutex>> locks_;
   };
 
+  /// The mean values in s over the planners that have them (the caller holds all of them).
+  std::vector<double> meanValues(const rl_common::State& s) const;
   void modelLoop();
-  void planLoop();
+  void planLoop(std::size_t index);
   void fail(std::exception_ptr error);
   void rethrowUnreportedLocked();
   void notifyAll();
 
   const Config config_;
-  std::unique_ptr<rl_common::MDPModel> model_;   // model-learning thread only
-  std::unique_ptr<rl_common::Planner> planner_;  // under plannerMutex_
-  std::mutex plannerMutex_;
+  std::unique_ptr<rl_common::MDPModel> model_;                 // model-learning thread only
+  std::vector<std::unique_ptr<rl_common::Planner>> planners_;  // planner k under mutexes_[k]
+  std::vector<std::unique_ptr<std::mutex>> mutexes_;
+  rl_common::Random tieRng_;  // act() only
 
   mutable std::mutex control_;
   std::condition_variable workCv_;  // model thread: experiences queued, or stopping
@@ -157,7 +188,7 @@ class RealTimePlanner {
 
   std::mutex joinMutex_;  // serialises stop()
   std::thread modelThread_;
-  std::thread planThread_;
+  std::vector<std::thread> planThreads_;
 };
 
 }  // namespace rl_agent

@@ -82,7 +82,7 @@ class StateSpacePlanner : public rl_common::Planner {
   /// Makes every state in `states` a root (e.g. all reachable states of a known model).
   void addStates(const std::vector<rl_common::State>& states);
   /// Q(s, ·); empty if `s` is not in the table.
-  std::vector<double> qValues(const rl_common::State& s) const;
+  std::vector<double> qValues(const rl_common::State& s) const override;
   /// max_a Q(s, a); 0 for a state not in the table.
   double value(const rl_common::State& s) const;
   std::size_t numStates() const { return states_.size(); }

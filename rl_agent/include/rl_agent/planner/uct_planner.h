@@ -159,7 +159,7 @@ class UctPlanner : public rl_common::Planner {
   rl_common::State modelInput(const rl_common::State& s) const;
 
   /// Q(s, ·) with the current action history; empty if `s` has no record.
-  std::vector<double> qValues(const rl_common::State& s) const;
+  std::vector<double> qValues(const rl_common::State& s) const override;
   /// N(s) (counts as capped by the latest model version); 0 if `s` has no record.
   long stateVisits(const rl_common::State& s) const;
   /// N(s, a), as stateVisits(); 0 if `s` has no record.
