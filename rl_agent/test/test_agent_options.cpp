@@ -237,3 +237,25 @@ TEST(AgentOptions, TaskPlannerOptions) {
   EXPECT_NE(errorOf({"--agent", "qlearner", "--taskplanner", "vi"}).find("--taskplanner"),
             std::string::npos);
 }
+
+TEST(AgentOptions, SearchThreads) {
+  const AgentOptions d;
+  EXPECT_EQ(d.searchthreads, 0);  // one per core
+  EXPECT_GE(rl_agent::searchThreads(d), 1);
+  AgentOptions o = parse({"--agent", "texplore", "--searchthreads", "3"});
+  EXPECT_EQ(o.searchthreads, 3);
+  EXPECT_EQ(rl_agent::searchThreads(o), 3);
+  EXPECT_NE(errorOf({"--agent", "texplore", "--searchthreads", "65"}).find("[0, 64]"),
+            std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "texplore", "--searchthreads", "-1"}).find("[0, 64]"),
+            std::string::npos);
+  // Only the real-time planner has search threads.
+  EXPECT_NE(errorOf({"--agent", "texplore", "--rollouts", "100", "--searchthreads", "2"})
+                .find("real-time planner"),
+            std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "texplore", "--planner", "uct", "--searchthreads", "2"})
+                .find("real-time planner"),
+            std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "qlearner", "--searchthreads", "2"}).find("--searchthreads"),
+            std::string::npos);
+}

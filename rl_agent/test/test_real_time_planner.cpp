@@ -295,3 +295,95 @@ TEST(RealTimePlanner, RejectsBadConstruction) {
                                makePlanner(), c),
                std::invalid_argument);
 }
+
+namespace {
+
+/// A planner with fixed values in every state; counts its rollouts.
+class FixedValues : public rl_common::Planner {
+ public:
+  explicit FixedValues(std::vector<double> q) : q_(std::move(q)) {}
+  void setModel(std::shared_ptr<const rl_common::ModelView> /*model*/) override { ++models; }
+  long plan(const State& /*s*/, const rl_common::PlanningBudget& budget) override {
+    rollouts += budget.rollouts;
+    return budget.rollouts;
+  }
+  int bestAction(const State& /*s*/) override {
+    return static_cast<int>(std::max_element(q_.begin(), q_.end()) - q_.begin());
+  }
+  std::vector<double> qValues(const State& /*s*/) const override { return q_; }
+  std::atomic<long> rollouts{0};
+  std::atomic<long> models{0};
+
+ private:
+  std::vector<double> q_;
+};
+
+}  // namespace
+
+TEST(RealTimePlanner, SeveralSearchThreadsEachPlanAndActOnTheMeanValues) {
+  // Tree 0 prefers action 0 (1.0 against 0.2), tree 1 action 1 (0.0 against 1.0): the means
+  // are 0.5 and 0.6, so the root-parallel choice is action 1, which neither tree alone nor
+  // tree 0 (the single-tree answer) gives.
+  auto stats = std::make_shared<Stats>();
+  std::vector<std::unique_ptr<rl_common::Planner>> planners;
+  planners.push_back(std::make_unique<FixedValues>(std::vector<double>{1.0, 0.2}));
+  planners.push_back(std::make_unique<FixedValues>(std::vector<double>{0.0, 1.0}));
+  auto* first = static_cast<FixedValues*>(planners[0].get());
+  auto* second = static_cast<FixedValues*>(planners[1].get());
+  RealTimePlanner rtp(std::make_unique<CountingModel>(stats, CountingModel::Options()),
+                      std::move(planners), RealTimePlanner::Config());
+  EXPECT_EQ(rtp.numSearchThreads(), 2u);
+  EXPECT_EQ(rtp.act(State{0.0f}, Clock::now() + milliseconds(50)), 1);
+  const std::vector<double> mean = rtp.qValues(State{0.0f});
+  ASSERT_EQ(mean.size(), 2u);
+  EXPECT_DOUBLE_EQ(mean[0], 0.5);
+  EXPECT_DOUBLE_EQ(mean[1], 0.6);
+  // Both threads planned; every planner gets every model view.
+  const auto giveUp = Clock::now() + std::chrono::seconds(10);
+  while ((first->rollouts == 0 || second->rollouts == 0) && Clock::now() < giveUp) {
+    rtp.act(State{0.0f}, Clock::now() + milliseconds(10));
+  }
+  EXPECT_GT(first->rollouts.load(), 0);
+  EXPECT_GT(second->rollouts.load(), 0);
+  rtp.addExperience(step(0.0f, 1));
+  rtp.stop();
+  EXPECT_EQ(first->models.load(), second->models.load());
+  EXPECT_EQ(first->models.load(), stats->updates.load() + 1);
+  int visited = 0;
+  const auto planners2 = rtp.releasePlanners();
+  for (const auto& p : planners2) visited += p != nullptr ? 1 : 0;
+  EXPECT_EQ(visited, 2);
+}
+
+TEST(RealTimePlanner, TwoUctTreesLearnTheChain) {
+  // Real planners on one model: both trees search, and their mean values pick "right".
+  auto stats = std::make_shared<Stats>();
+  std::vector<std::unique_ptr<rl_common::Planner>> planners;
+  planners.push_back(makePlanner(1));
+  planners.push_back(makePlanner(2));
+  RealTimePlanner rtp(std::make_unique<CountingModel>(stats, CountingModel::Options()),
+                      std::move(planners), RealTimePlanner::Config());
+  const auto giveUp = Clock::now() + std::chrono::seconds(10);
+  while (rtp.totalRollouts() < 6000 && Clock::now() < giveUp) {
+    rtp.act(State{0.0f}, Clock::now() + milliseconds(50));
+  }
+  ASSERT_GE(rtp.totalRollouts(), 6000);
+  rtp.forEachPlanner([&](rl_common::Planner& p) {
+    EXPECT_GT(static_cast<UctPlanner&>(p).stateVisits(State{0.0f}), 100);
+  });
+  EXPECT_EQ(rtp.act(State{0.0f}, Clock::now()), 1);
+}
+
+TEST(RealTimePlanner, RejectsAnEmptyOrNullPlannerList) {
+  auto stats = std::make_shared<Stats>();
+  EXPECT_THROW(RealTimePlanner(std::make_unique<CountingModel>(stats, CountingModel::Options()),
+                               std::vector<std::unique_ptr<rl_common::Planner>>{},
+                               RealTimePlanner::Config()),
+               std::invalid_argument);
+  std::vector<std::unique_ptr<rl_common::Planner>> withNull;
+  withNull.push_back(makePlanner());
+  withNull.push_back(nullptr);
+  EXPECT_THROW(RealTimePlanner(std::make_unique<CountingModel>(stats, CountingModel::Options()),
+                               std::move(withNull), RealTimePlanner::Config()),
+               std::invalid_argument);
+}
