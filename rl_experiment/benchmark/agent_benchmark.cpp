@@ -9,6 +9,7 @@
 //       per core) it runs the single-thread agent first, in the same run, and prints the ratio
 //
 // Prints figures only; never a pass/fail verdict.
+#include <malloc.h>
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -22,6 +23,7 @@
 #include "rl_agent/agent/model_based_agent.h"
 #include "rl_common/option_parser.h"
 #include "rl_env/env/environment_registry.h"
+#include "rl_experiment/runner/experiment.h"
 
 namespace {
 
@@ -93,6 +95,9 @@ struct RealTimeFigures {
 };
 
 RealTimeFigures realTimeRun(int steps, float actrate, std::uint64_t seed, int threads) {
+  // Each run's own peak: return what an earlier run freed, then restart the high-water mark.
+  malloc_trim(0);
+  rl_experiment::resetPeakRss();
   Setup s = makeSetup(seed, 0, actrate, threads);
   std::vector<double> rollouts, intervals;
   float r = s.env->apply(s.agent->firstAction(s.env->sensation()));
@@ -111,7 +116,7 @@ RealTimeFigures realTimeRun(int steps, float actrate, std::uint64_t seed, int th
               quantile(rollouts, 0.1), quantile(rollouts, 0.9));
   std::printf("step interval ms:    median %.1f  p99 %.1f  max %.1f\n", quantile(intervals, 0.5),
               quantile(intervals, 0.99), quantile(intervals, 1.0));
-  std::printf("peak memory MB:      %.1f (this process so far)\n", peakRssMb());
+  std::printf("peak memory MB:      %.1f\n", rl_experiment::peakRssKb() / 1024.0);
   std::fflush(stdout);
   return {quantile(rollouts, 0.5)};
 }

@@ -227,12 +227,23 @@ ModelBasedAgent::ModelBasedAgent(const AgentOptions& options,
   if (isRealTimeUct(options.planner) && options.rollouts == 0) {
     uct_ = nullptr;  // owned and serialised by realTime_ from now on
     // Root-parallel search: tree 0 keeps the planner's seed, the others get streams of their own.
+    // The trees share one memory budget (their tables and prediction caches split it), so
+    // memory does not grow with the number of threads.
+    const int threads = searchThreads(options);
     std::vector<std::unique_ptr<rl_common::Planner>> planners;
-    planners.push_back(std::move(planner));
-    for (int k = 1; k < searchThreads(options); ++k) {
-      planners.push_back(std::make_unique<UctPlanner>(
-          plannerConfig(options, task),
-          rl_common::Random::deriveSeed(plannerSeed, "search", static_cast<std::uint64_t>(k))));
+    if (threads == 1) {
+      planners.push_back(std::move(planner));
+    } else {
+      for (int k = 0; k < threads; ++k) {
+        UctPlanner::Config c = plannerConfig(options, task);
+        c.maxStates = std::max<std::size_t>(1000, c.maxStates / static_cast<std::size_t>(threads));
+        c.maxCachedPredictions =
+            std::max<std::size_t>(1000, c.maxCachedPredictions / static_cast<std::size_t>(threads));
+        planners.push_back(std::make_unique<UctPlanner>(
+            c, k == 0 ? plannerSeed
+                      : rl_common::Random::deriveSeed(plannerSeed, "search",
+                                                      static_cast<std::uint64_t>(k))));
+      }
     }
     realTime_ = std::make_unique<RealTimePlanner>(std::move(model), std::move(planners),
                                                   realTimeConfig(plannerSeed));

@@ -132,13 +132,12 @@ rl_common::StateActionInfo FactoredModel::View::query(const rl_common::State& in
   double sum = 0.0, part = 0.0;
   info.factored.resize(d);
   for (std::size_t j = 0; j < d; ++j) {
-    const Distribution dist = variance ? features_[j].predict(x, &part) : features_[j].predict(x);
+    Distribution dist = variance ? features_[j].predict(x, &part) : features_[j].predict(x);
     sum += part;
-    auto& out = info.factored[j];
-    out.reserve(dist.size());
-    for (const auto& [value, p] : dist) {
-      out.emplace_back(config_->relativeTransitions ? current[j] + value : value, p);
+    if (config_->relativeTransitions) {
+      for (auto& outcome : dist) outcome.first = current[j] + outcome.first;
     }
+    info.factored[j] = std::move(dist);
   }
   info.reward = info.externalReward =
       static_cast<float>(expectation(variance ? reward_.predict(x, &part) : reward_.predict(x)));

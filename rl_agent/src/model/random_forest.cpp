@@ -13,7 +13,10 @@ namespace {
 /// Sum of weight_i * P_i over the distributions, equal outcomes merged, sorted by value.
 Distribution combine(const std::vector<const Distribution*>& dists,
                      const std::vector<double>& weights) {
-  Distribution out;
+  // Weighted outcomes are gathered in a per-thread scratch list and merged there; the result
+  // is one allocation of exactly its size (cached predictions keep it, so no spare capacity).
+  thread_local Distribution out;
+  out.clear();
   for (std::size_t i = 0; i < dists.size(); ++i) {
     if (weights[i] == 0.0) continue;
     for (const auto& [v, p] : *dists[i]) out.emplace_back(v, weights[i] * p);
@@ -29,8 +32,7 @@ Distribution combine(const std::vector<const Distribution*>& dists,
       out[n++] = {v, p};
     }
   }
-  out.resize(n);
-  return out;
+  return Distribution(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(n));
 }
 
 /// KL(P || Q) with the original's epsilon, for distributions known to be valid (tree leaves).
