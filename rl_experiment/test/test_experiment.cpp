@@ -4,9 +4,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <set>
 #include <sstream>
+#include <thread>
 
 #include "rl_experiment/log/csv_file.h"
 
@@ -232,4 +234,23 @@ TEST(ReproduceScript, TaskPlannerViGoesToTheExploreTaskRunsOnly) {
   EXPECT_NE(line("combined: texplore-vanir"), "") << text;
   EXPECT_EQ(line("explore-task, combined: qlearner").find("--taskplanner"), std::string::npos)
       << text;
+}
+
+TEST(Experiment, ParallelTrialsShareTheCoresBetweenSearchThreads) {
+  auto config = [](const std::vector<std::string>& args) {
+    rl_experiment::ExperimentConfig c;
+    rl_common::OptionParser p("experiment", "");
+    rl_experiment::addExperimentOptions(p, &c);
+    p.parse(args);
+    rl_experiment::finishExperimentConfig(p, &c);
+    return c;
+  };
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  EXPECT_EQ(config({"--agent", "texplore"}).agent.searchthreads, 0);  // one per core
+  EXPECT_EQ(config({"--agent", "texplore", "--jobs", "2"}).agent.searchthreads,
+            std::max(1, cores / 2));
+  EXPECT_EQ(config({"--agent", "texplore", "--jobs", "64"}).agent.searchthreads, 1);
+  EXPECT_EQ(
+      config({"--agent", "texplore", "--jobs", "2", "--searchthreads", "3"}).agent.searchthreads,
+      3);
 }

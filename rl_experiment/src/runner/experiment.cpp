@@ -14,6 +14,7 @@
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include "rl_agent/agent/agent_registry.h"
 #include "rl_common/random.h"
@@ -95,6 +96,12 @@ void finishExperimentConfig(const rl_common::OptionParser& p, ExperimentConfig* 
   }
   rl_agent::applyAgentDefaults(p, &c->agent);
   rl_agent::checkAgentOptions(p, c->agent);
+  // Parallel trials share the cores: each real-time agent plans with its share of them unless
+  // --searchthreads says otherwise (the run records the value used).
+  if (c->jobs > 1 && !p.given("searchthreads")) {
+    c->agent.searchthreads =
+        std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / c->jobs);
+  }
   if (c->force && c->resume) {
     throw rl_common::OptionError("options --force and --resume exclude each other");
   }
