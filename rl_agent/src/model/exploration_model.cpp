@@ -33,14 +33,16 @@ std::shared_ptr<const ExplorationModel::View> ExplorationModel::explorationView(
   } else if (enabled_ && !rewards_->empty()) {
     v->rewards_ = rewards_;
   }
+  if (v->rewards_) {
+    for (const auto& r : *v->rewards_) v->needsVariance_ = v->needsVariance_ || r->usesVariance();
+  }
   return v;
 }
 
 rl_common::StateActionInfo ExplorationModel::View::query(const rl_common::State& input,
                                                          int action) const {
   if (rewards_ == nullptr) return model_->query(input, action);
-  bool needVariance = false;
-  for (const auto& r : *rewards_) needVariance = needVariance || r->usesVariance();
+  const bool needVariance = needsVariance_;  // decided once per view, not per query
   double variance = 0.0;
   rl_common::StateActionInfo info =
       model_->query(input, action, needVariance ? &variance : nullptr);

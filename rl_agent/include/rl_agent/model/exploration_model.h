@@ -39,6 +39,7 @@ class ExplorationModel : public rl_common::MDPModel {
     std::shared_ptr<const FactoredModel::View> model_;
     NoveltyIndex::Snapshot visited_;
     std::shared_ptr<const Rewards> rewards_;  ///< null when intrinsic rewards are off
+    bool needsVariance_ = false;              ///< some reward reads the model's variance
   };
 
   ExplorationModel(const FactoredModel::Config& config, std::uint64_t seed, Rewards rewards,
