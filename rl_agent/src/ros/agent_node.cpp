@@ -18,6 +18,11 @@ namespace {
 /// Seed experiences kept while no description has arrived.
 constexpr std::size_t kMaxEarlySeeds = 100000;
 
+/// The env sends one state per action, but any node may publish on the state topic: with the
+/// original's queue of 1, a foreign message arriving before the callback pushes the env's state
+/// out, the agent never answers it and the pair stalls. A deeper queue loses nothing.
+constexpr uint32_t kStateQueue = 10;
+
 bool allFinite(const std::vector<float>& v) {
   for (float x : v) {
     if (!std::isfinite(x)) return false;
@@ -73,7 +78,8 @@ AgentNode::AgentNode(ros::NodeHandle nh, const AgentOptions& options,
   breakdownPub_ = nh_.advertise<rl_msgs::RLRewardBreakdown>("rl_agent/rl_reward_breakdown", 10);
   descriptionSub_ =
       nh_.subscribe("rl_env/rl_env_description", 1, &AgentNode::onDescription, this, hints);
-  stateSub_ = nh_.subscribe("rl_env/rl_state_reward", 1, &AgentNode::onState, this, hints);
+  stateSub_ =
+      nh_.subscribe("rl_env/rl_state_reward", kStateQueue, &AgentNode::onState, this, hints);
   seedSub_ = nh_.subscribe("rl_env/rl_seed", 100, &AgentNode::onSeed, this, hints);
   resetSrv_ = nh_.advertiseService("rl_agent/reset", &AgentNode::onReset, this);
   ROS_INFO_STREAM_NAMED("agent", "agent '" << options_.agent << "' waiting for an environment");

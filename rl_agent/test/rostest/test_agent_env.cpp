@@ -2,6 +2,7 @@
 // malformed messages and checks that it keeps acting.
 #include <gtest/gtest.h>
 #include <rl_msgs/RLAction.h>
+#include <rl_msgs/RLEnvDescription.h>
 #include <rl_msgs/RLExperimentInfo.h>
 #include <rl_msgs/RLRewardBreakdown.h>
 #include <rl_msgs/RLStateReward.h>
@@ -32,6 +33,11 @@ TEST(AgentEnv, EpisodesCompleteAndBadMessagesAreDropped) {
         lastEpisode = m->episode_number;
         ++infos;
       });
+  std::size_t numFeatures = 0;
+  auto d = nh.subscribe<rl_msgs::RLEnvDescription>(
+      "rl_env/rl_env_description", 1, [&](const rl_msgs::RLEnvDescription::ConstPtr& m) {
+        numFeatures = static_cast<std::size_t>(m->num_states);
+      });
   auto b = nh.subscribe<rl_msgs::RLRewardBreakdown>(
       "rl_agent/rl_reward_breakdown", 100,
       [&](const rl_msgs::RLRewardBreakdown::ConstPtr&) { ++breakdowns; });
@@ -44,11 +50,13 @@ TEST(AgentEnv, EpisodesCompleteAndBadMessagesAreDropped) {
   // Malformed states, published as if by the environment: dropped, the agent keeps going.
   ros::Publisher bad = nh.advertise<rl_msgs::RLStateReward>("rl_env/rl_state_reward", 1);
   ASSERT_TRUE(spinUntil([&] { return bad.getNumSubscribers() > 0; }, 10.0));
-  rl_msgs::RLStateReward wrongLength;
-  wrongLength.state = {1.0f, 2.0f};
+  ASSERT_GT(numFeatures, 0u) << "no environment description";
+  rl_msgs::RLStateReward wrongLength;  // one feature too many for this environment
+  wrongLength.state.assign(numFeatures + 1, 1.0f);
   bad.publish(wrongLength);
-  rl_msgs::RLStateReward nan;
-  nan.state = {0.0f, 0.0f, std::numeric_limits<float>::quiet_NaN(), 1.0f};
+  rl_msgs::RLStateReward nan;  // the right length, one value NaN
+  nan.state.assign(numFeatures, 0.0f);
+  nan.state.back() = std::numeric_limits<float>::quiet_NaN();
   bad.publish(nan);
   const int before = actions;
   ASSERT_TRUE(spinUntil([&] { return actions > before + 20; }, 30.0)) << "agent stopped acting";

@@ -43,9 +43,12 @@ EnvironmentNode::EnvironmentNode(ros::NodeHandle nh, Factory factory, std::uint6
       ros::SubscriberStatusCallback(), ros::VoidConstPtr(), /*latch=*/false);
   statePub_ = nh_.advertise<rl_msgs::RLStateReward>("rl_env/rl_state_reward", 1, /*latch=*/true);
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
-  actionSub_ = nh_.subscribe("rl_agent/rl_action", 1, &EnvironmentNode::onAction, this, hints);
-  infoSub_ = nh_.subscribe("rl_agent/rl_experiment_info", 1, &EnvironmentNode::onExperimentInfo,
-                           this, hints);
+  // Deeper than the original's 1: a second publisher's action must not push the agent's out
+  // (a lost action stalls the pair, which waits on each other).
+  constexpr uint32_t kQueue = 10;
+  actionSub_ = nh_.subscribe("rl_agent/rl_action", kQueue, &EnvironmentNode::onAction, this, hints);
+  infoSub_ = nh_.subscribe("rl_agent/rl_experiment_info", kQueue,
+                           &EnvironmentNode::onExperimentInfo, this, hints);
   resetSrv_ = nh_.advertiseService("rl_env/reset", &EnvironmentNode::onReset, this);
   descriptionPub_.publish(description);
   ROS_INFO_STREAM_NAMED(
