@@ -259,3 +259,15 @@ TEST(AgentOptions, SearchThreads) {
   EXPECT_NE(errorOf({"--agent", "qlearner", "--searchthreads", "2"}).find("--searchthreads"),
             std::string::npos);
 }
+
+TEST(AgentOptions, DeferIsTheExplorersOwnUnlessGiven) {
+  EXPECT_EQ(parse({"--agent", "texplore", "--v", "1", "--n", "3"}).defer, -1);
+  EXPECT_EQ(parse({"--agent", "texplore", "--v", "1", "--n", "3", "--defer", "0"}).defer, 0);
+  EXPECT_EQ(parse({"--agent", "texplore", "--defer", "150"}).defer, 150);
+  EXPECT_NE(errorOf({"--agent", "texplore", "--defer", "-1"}), "");
+  EXPECT_NE(errorOf({"--agent", "qlearner", "--defer", "300"}), "");
+  EXPECT_NE(errorOf({"--agent", "texplore", "--defer", "300", "--history", "2"}).find("history"),
+            std::string::npos);
+  // Not given, a history only turns the explorer's deferral off.
+  EXPECT_EQ(errorOf({"--agent", "texplore", "--v", "1", "--n", "3", "--history", "2"}), "");
+}

@@ -387,3 +387,54 @@ TEST(RealTimePlanner, RejectsAnEmptyOrNullPlannerList) {
                                std::move(withNull), RealTimePlanner::Config()),
                std::invalid_argument);
 }
+
+namespace {
+
+/// The chain mirrored: going left from 1 pays 1 and ends; nothing else pays.
+class LeftPays : public rl_common::ModelView {
+ public:
+  explicit LeftPays(std::shared_ptr<const rl_common::ModelView> base) : base_(std::move(base)) {}
+  StateActionInfo query(const State& s, int a) const override {
+    StateActionInfo info = base_->query(s, a);
+    info.reward = 0.0f;
+    info.termProb = 0.0f;
+    if (a == 1 && s[0] >= 4.0f) info.transitions = {{State{5.0f}, 1.0}};
+    if (a == 0 && s[0] <= 1.0f) {
+      info.reward = 1.0f;
+      info.termProb = 1.0f;
+    }
+    return info;
+  }
+
+ private:
+  std::shared_ptr<const rl_common::ModelView> base_;
+};
+
+}  // namespace
+
+TEST(RealTimePlanner, AViewFilterIsWhatThePlannersPlanOnThroughModelUpdates) {
+  auto stats = std::make_shared<Stats>();
+  RealTimePlanner rtp(std::make_unique<CountingModel>(stats, CountingModel::Options()),
+                      makePlanner(), RealTimePlanner::Config());
+  auto filtered = std::make_shared<std::atomic<long>>(0);
+  rtp.setViewFilter([filtered](std::shared_ptr<const rl_common::ModelView> view) {
+    ++*filtered;
+    return std::shared_ptr<const rl_common::ModelView>(std::make_shared<LeftPays>(view));
+  });
+  EXPECT_EQ(filtered->load(), 1) << "the latest view is filtered at once";
+  const auto giveUp = Clock::now() + std::chrono::seconds(10);
+  while (rtp.totalRollouts() < 3000 && Clock::now() < giveUp) {
+    rtp.addExperience(step(2.0f, 1));  // new model views, each filtered
+    rtp.act(State{2.0f}, Clock::now() + milliseconds(20));
+  }
+  ASSERT_GE(rtp.totalRollouts(), 3000);
+  EXPECT_GT(filtered->load(), 1);
+  EXPECT_EQ(rtp.act(State{2.0f}, Clock::now()), 0) << "planned on the chain, not the filter";
+  // latestView() is the model's own view.
+  EXPECT_NE(std::dynamic_pointer_cast<const ChainView>(rtp.latestView()), nullptr);
+  rtp.setViewFilter(nullptr);
+  const long before = filtered->load();
+  rtp.addExperience(step(2.0f, 1));
+  rtp.act(State{2.0f}, Clock::now() + milliseconds(50));
+  EXPECT_EQ(filtered->load(), before) << "a removed filter is not called";
+}

@@ -280,6 +280,8 @@ def main(argv=None):
           "switch, task planner %s, seed %d; run time %.1f min on %d jobs." %
           (trials, rollouts, repr(args.lam), args.task_rewards, args.task_planner, args.seed,
            elapsed / 60, args.jobs), "",
+          "TEXPLORE-VANIR puts off one-way steps while exploring (the suite's default, "
+          "--defer 300; the original's behaviour is --defer 0).", "",
           "For reference, the paper's optimal policy earns %.1f over the 3000 task steps." %
           PAPER_OPTIMAL_TASK_REWARD, ""] + tables
     tmp = os.path.join(out, ".results.md.tmp")

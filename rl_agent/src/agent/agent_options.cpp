@@ -83,6 +83,11 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
           "UCT: rollouts sample a feature of a factored prediction only among values of at "
           "least this probability (0: every value, as the original)",
           inRange(0.0f, 1.0f));
+  p.value("defer", &o->defer,
+          "while exploring, put off one-way steps (learned from the agent's own: features no "
+          "action gave back) for this many steps after each one (default: 300 for "
+          "--explore variancenovelty with --v or --n above 0, else 0; 0: never, as the original)",
+          atLeast(0L));
   p.value("depth", &o->depth, "UCT: at most this many simulated actions per rollout",
           greaterThan(0));
   p.flag("bonusonce", &o->bonusonce, true,
@@ -202,11 +207,11 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
   lambdaAgents.push_back("sarsa");
   requireAgent(p, o, "lambda", lambdaAgents);
   for (const char* option :
-       {"actrate",  "m",           "model",      "planner",    "combo",        "nmodels",
-        "reltrans", "abstrans",    "v",          "n",          "history",      "rollouts",
-        "tau",      "pathvisits",  "ucb",        "ucbc",       "bonusonce",    "taskucb",
-        "taskucbc", "depth",       "minprob",    "novelty",    "taskplanner",  "taskdepth",
-        "taskkey",  "taskminprob", "tasksweeps", "taskrecent", "searchthreads"}) {
+       {"actrate",  "m",           "model",      "planner",    "combo",         "nmodels",
+        "reltrans", "abstrans",    "v",          "n",          "history",       "rollouts",
+        "tau",      "pathvisits",  "ucb",        "ucbc",       "bonusonce",     "taskucb",
+        "taskucbc", "depth",       "minprob",    "novelty",    "taskplanner",   "taskdepth",
+        "taskkey",  "taskminprob", "tasksweeps", "taskrecent", "searchthreads", "defer"}) {
     requireAgent(p, o, option, kModelBased);
   }
   const bool modelBased = isOneOf(o.agent, kModelBased);
@@ -226,6 +231,11 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
       throw rl_common::OptionError(
           "option --searchthreads needs the real-time planner (--planner parallel-uct or "
           "delayed-parallel-uct, without --rollouts)");
+    }
+    if (p.given("defer") && o.defer > 0 && o.history > 0) {
+      throw rl_common::OptionError(
+          "option --defer does not take --history (an action history never comes back, so "
+          "every step would look irreversible)");
     }
     if (o.taskplanner == "vi" && o.history > 0) {
       throw rl_common::OptionError(

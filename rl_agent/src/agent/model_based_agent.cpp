@@ -198,6 +198,10 @@ ModelBasedAgent::ModelBasedAgent(const AgentOptions& options,
   randomActions_ = explorer->randomActions;
   boltzmann_ = explorer->boltzmann;
   tau_ = explorer->tau;
+  // The explorer's own deferral, unless given; an action history never comes back, so with
+  // --history every step would look one-way.
+  const long defer = options.defer >= 0 ? options.defer : explorer->deferSteps;
+  if (defer > 0 && options.history == 0) deferral_ = std::make_unique<StepDeferral>(defer);
 
   if (binsStates(options) && options.model != "m5tree") {
     grid_ = StateGrid(options.nstates, task.minFeatures, task.maxFeatures);
@@ -293,7 +297,12 @@ void ModelBasedAgent::learn(const rl_common::Experience& e) {
   } else {
     const auto start = Clock::now();
     model_->update({e});
-    planner_->setModel(model_->view());  // novelty changes with every experience
+    // Novelty changes with every experience; with --defer the next chooseAction() sets it.
+    if (deferral_) {
+      modelPending_ = true;
+    } else {
+      planner_->setModel(model_->view());
+    }
     lastLearnSeconds_ = std::chrono::duration<double>(Clock::now() - start).count();
   }
 }
@@ -317,6 +326,8 @@ void ModelBasedAgent::seedExperiences(const std::vector<rl_common::Experience>& 
   } else {
     model_->update(inputs);
     planner_->setModel(model_->view());
+    deferralKey_ = nullptr;  // not a deferring view: the next chooseAction() wraps it if needed
+    modelPending_ = false;
   }
 }
 
@@ -361,6 +372,24 @@ int ModelBasedAgent::chooseAction(const rl_common::State& raw) {
                                       std::chrono::duration<double>(1.0 / options_.actrate));
   const rl_common::State s = binned(raw);
   const rl_common::State input = modelInput(s);
+  if (deferral_) {
+    deferral_->observe(*currentView(), lastAction_ >= 0 ? lastInput_ : rl_common::State{},
+                       lastAction_, input, task_.numActions);
+    // The planner sees the one-way steps it must put off. Synchronously, learn() leaves the
+    // model to this call; in real time the planners' views are filtered when that changes.
+    // Only when something changed: a new model view caps the search tree's visit counts.
+    const void* key = exploring_ ? deferral_->planningKey() : nullptr;
+    if (!realTime_) {
+      if (modelPending_ || key != deferralKey_) {
+        const auto view = model_->view();
+        planner_->setModel(key != nullptr ? deferral_->planningView(view) : view);
+      }
+      modelPending_ = false;
+    } else if (key != deferralKey_) {
+      realTime_->setViewFilter(key != nullptr ? deferral_->viewFilter() : nullptr);
+    }
+    deferralKey_ = key;
+  }
   const auto planStart = Clock::now();
   int action;
   if (taskPlannerActive()) {
@@ -398,6 +427,9 @@ int ModelBasedAgent::chooseAction(const rl_common::State& raw) {
     }
   } else if (epsilonGreedy_ && rng_.bernoulli(options_.epsilon)) {
     action = rng_.uniformInt(0, task_.numActions - 1);
+  }
+  if (deferral_ && exploring_ && static_cast<int>(q.size()) == task_.numActions) {
+    action = deferral_->choose(input, action, q, rng_);
   }
   // What the model predicts the chosen action earns, part by part.
   const auto info = currentView()->query(input, action);
@@ -445,7 +477,11 @@ void ModelBasedAgent::setIntrinsicEnabled(bool enabled) {
   taskPlanner_.reset();  // a task phase plans afresh, on the model as it is then
   if (exploration_ != nullptr) exploration_->setIntrinsicEnabled(enabled);
   if (tabular_ != nullptr) tabular_->setOptimistic(enabled);
-  if (!realTime_) planner_->setModel(model_->view());
+  if (!realTime_) {
+    planner_->setModel(model_->view());
+    deferralKey_ = nullptr;  // the view just set is not a deferring one
+    modelPending_ = false;
+  }
   applyUcbBound();
 }
 
@@ -497,6 +533,7 @@ void ModelBasedAgent::relabelRewards(const std::vector<float>& rewards) {
     planners.push_back(std::move(planner_));
   }
   realTime_.reset();
+  deferralKey_ = nullptr;  // a new real-time planner has no view filter
   model_.reset();
   std::unique_ptr<rl_common::MDPModel> model = makeModel();
   model->update(replay);

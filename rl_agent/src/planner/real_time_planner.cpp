@@ -204,6 +204,14 @@ std::shared_ptr<const rl_common::ModelView> RealTimePlanner::latestView() const 
   return latestView_;
 }
 
+void RealTimePlanner::setViewFilter(ViewFilter filter) {
+  std::lock_guard<std::mutex> serial(viewMutex_);
+  filter_ = std::move(filter);
+  const auto view = latestView();
+  const auto planned = filter_ ? filter_(view) : view;
+  forEachPlanner([&planned](rl_common::Planner& p) { p.setModel(planned); });
+}
+
 RealTimePlanner::PlannerAccess::PlannerAccess(RealTimePlanner& owner, std::size_t first,
                                               std::size_t count)
     : owner_(owner) {
@@ -257,7 +265,9 @@ void RealTimePlanner::modelLoop() {
       if (!view) {
         throw std::runtime_error("RealTimePlanner: the model returned a null view");
       }
-      forEachPlanner([&view](rl_common::Planner& p) { p.setModel(view); });
+      std::lock_guard<std::mutex> serial(viewMutex_);
+      const auto planned = filter_ ? filter_(view) : view;
+      forEachPlanner([&planned](rl_common::Planner& p) { p.setModel(planned); });
       std::lock_guard<std::mutex> lock(control_);
       latestView_ = std::move(view);
     }

@@ -33,9 +33,10 @@ ExplorerRegistry build() {
         auto e = std::make_unique<Explorer>();
         if (s.v != 0.0f) e->rewards.push_back(std::make_shared<VarianceReward>(s.v));
         if (s.n != 0.0f) e->rewards.push_back(std::make_shared<NoveltyReward>(s.n, s.stateNovelty));
+        if (!e->rewards.empty()) e->deferSteps = kVanirDeferSteps;
         return e;
       },
-      "TEXPLORE-VANIR: v * variance + n * novelty");
+      "TEXPLORE-VANIR: v * variance + n * novelty, one-way steps put off (--defer)");
   reg.add(
       "unknown",
       [](const ExplorerSettings& s) {

@@ -49,7 +49,11 @@ struct AgentOptions {
   /// bonusOncePerPath).
   bool bonusonce = false;
   float minprob = 0.0f;  ///< UctPlanner::Config::minOutcomeProbability
-  int depth = 200;       ///< UCT's rollout depth cap (the original's MAX_DEPTH)
+  /// While exploring, put off one-way steps for this many steps after each one (StepDeferral);
+  /// 0: never, as the original; -1: the explorer's own (Explorer::deferSteps: 300 for
+  /// TEXPLORE-VANIR with a bonus, 0 for the others).
+  long defer = -1;
+  int depth = 200;  ///< UCT's rollout depth cap (the original's MAX_DEPTH)
   /// UCT's bound (UctPlanner::UcbBound): "range" (the original's) or "normalized".
   std::string ucb = "range";
   float ucbc = 1.0f;  ///< c of the normalized bound

@@ -51,6 +51,7 @@
 #include <vector>
 
 #include "rl_agent/agent/agent_options.h"
+#include "rl_agent/agent/irreversible_step.h"
 #include "rl_agent/agent/reward_breakdown_source.h"
 #include "rl_agent/model/exploration_model.h"
 #include "rl_agent/model/tabular_model.h"
@@ -114,6 +115,10 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   std::shared_ptr<const rl_common::ModelView> learnedModelView() const;
   /// Rollouts (UCT) or solver iterations (vi/pi/sweeping) planned for the last action.
   long lastRollouts() const { return lastRollouts_; }
+  /// Steps a region is explored before a one-way step (--defer, or the explorer's); 0: never.
+  long deferSteps() const { return deferral_ ? deferral_->steps() : 0; }
+  /// The one-way steps learned and put off (null without --defer).
+  const StepDeferral* deferral() const { return deferral_.get(); }
   /// Seconds the last step spent updating the model (synchronous mode; 0 in real time, where
   /// a thread of its own learns) and choosing the action (planning, or waiting for its due
   /// time in real time).
@@ -174,6 +179,9 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   rl_common::State lastInput_;
   int lastAction_ = -1;
   long lastRollouts_ = 0;
+  std::unique_ptr<StepDeferral> deferral_;  ///< --defer: one-way steps put off
+  const void* deferralKey_ = nullptr;       ///< the planner's deferring view (planningKey)
+  bool modelPending_ = false;  ///< --defer, synchronous: learn() left setModel to chooseAction
   double lastLearnSeconds_ = 0.0;
   double lastPlanSeconds_ = 0.0;
   RewardBreakdown lastBreakdown_;

@@ -39,6 +39,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -120,8 +121,16 @@ class RealTimePlanner {
   /// Number of planners, each with its planning thread.
   std::size_t numSearchThreads() const { return planners_.size(); }
 
-  /// The model view the planner plans on now (the initial view before any update).
+  /// The model view the planner plans on now (the initial view before any update), before the
+  /// view filter.
   std::shared_ptr<const rl_common::ModelView> latestView() const;
+
+  /// What the planners plan on: filter(view) of every model view from now on (and of the
+  /// latest one, at once); null: the views themselves. The filter runs on the model thread
+  /// and on the caller's, so it must only read what it owns (e.g. an immutable list).
+  using ViewFilter = std::function<std::shared_ptr<const rl_common::ModelView>(
+      std::shared_ptr<const rl_common::ModelView>)>;
+  void setViewFilter(ViewFilter filter);
 
   /// Rollouts completed since the last act() returned (or since the start).
   long rolloutsSinceLastAct() const { return rollouts_.load() - rolloutsAtLastAct_.load(); }
@@ -179,6 +188,11 @@ class RealTimePlanner {
   std::exception_ptr error_;
   bool errorReported_ = false;
   std::shared_ptr<const rl_common::ModelView> latestView_;
+  /// Serialises the two writers of the planners' model (the model thread's new views and
+  /// setViewFilter), so that the last filter set is the one planned on; taken before any
+  /// planner's lock.
+  std::mutex viewMutex_;
+  ViewFilter filter_;  ///< guarded by viewMutex_
 
   std::atomic<long> rollouts_{0};
   std::atomic<long> rolloutsAtLastAct_{0};
