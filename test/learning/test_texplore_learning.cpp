@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rl_agent/agent/agent_options.h"
@@ -111,24 +113,39 @@ TEST(TexploreLearning, LearnsTwoRoomsFromItsSeeds) {
   EXPECT_LE(eps.back().steps, 25);  // the optimal path from the far corner is 14 steps
 }
 
-TEST(TexploreLearning, VanirLeavesTheFirstLightWorldRoom) {
-  // TEXPLORE-VANIR finds the key, unlocks the door and walks out (+10) from curiosity alone:
-  // nothing rewards it before the first exit. Greedy TEXPLORE and random walks stay inside far
-  // longer (random actions rarely complete PICKUP, PRESS and the exit in order).
+namespace {
+
+/// Steps until TEXPLORE-VANIR (300 rollouts) first walks out of LightWorld's first room (+10),
+/// or `bound` if it does not; the room id it is in then.
+std::pair<int, float> stepsToLeaveTheFirstRoom(const std::vector<std::string>& extra, int bound) {
   rl_env::EnvironmentOptions eo;
   eo.env = "lightworld";
   eo.seed = 3;
   auto env = rl_env::makeEnvironment(eo);
-  auto agent = makeTexplore(*env, {"--v", "1", "--n", "3", "--rollouts", "300"});
+  std::vector<std::string> args = {"--v", "1", "--n", "3", "--rollouts", "300"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  auto agent = makeTexplore(*env, args);
   float r = env->apply(agent->firstAction(env->sensation()));
   int steps = 1;
-  const int kBound = 1000;
-  while (r <= 0.0f && steps < kBound) {
+  while (r <= 0.0f && steps < bound) {
     r = env->apply(agent->nextAction(r, env->sensation()));
     ++steps;
   }
-  EXPECT_FLOAT_EQ(r, 10.0f) << "still in the first room after " << steps << " steps";
-  EXPECT_EQ(env->sensation()[4], 1.0f);  // room id
+  return {r > 0.0f ? steps : bound, env->sensation()[4]};
+}
+
+}  // namespace
+
+TEST(TexploreLearning, VanirLeavesTheFirstLightWorldRoom) {
+  // The original TEXPLORE-VANIR (--defer 0) finds the key, unlocks the door and walks out
+  // (+10) from curiosity alone: nothing rewards it before the first exit. Greedy TEXPLORE and
+  // random walks stay inside far longer (random actions rarely complete PICKUP, PRESS and the
+  // exit in order). The suite's default, which explores the room longer before each one-way
+  // step, does not leave on this seed within 2000 steps; over 70 trials it leaves the first room
+  // within 1000 steps as often as the original (62 against 60; CuriosityPaysOff checks it).
+  const auto [steps, room] = stepsToLeaveTheFirstRoom({"--defer", "0"}, 1000);
+  EXPECT_LT(steps, 1000) << "still in the first room after 1000 steps";
+  EXPECT_EQ(room, 1.0f);
 }
 
 // Taxi has no seed experiences; every action costs -1, an illegal PICKUP or PUTDOWN -10, the
