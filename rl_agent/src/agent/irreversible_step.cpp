@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "rl_agent/model/distribution.h"
+
 namespace rl_agent {
 
 namespace {
@@ -16,14 +18,10 @@ constexpr double kRestoreProbability = 0.05;
 
 /// P(feature j of the next state == value) under one prediction.
 double featureProbability(const rl_common::StateActionInfo& info, std::size_t j, float value) {
-  double p = 0.0;
   if (!info.factored.empty()) {
-    if (j >= info.factored.size()) return 0.0;
-    for (const auto& [v, q] : info.factored[j]) {
-      if (v == value) p += q;
-    }
-    return p;
+    return j < info.factored.size() ? probabilityOf(info.factored[j], value) : 0.0;
   }
+  double p = 0.0;
   for (const auto& [s, q] : info.transitions) {
     if (j < s.size() && s[j] == value) p += q;
   }
@@ -135,6 +133,12 @@ void StepDeferral::observe(const rl_common::ModelView& model, const rl_common::S
     }
   }
   if (oneWay(previous, action)) inRegion_ = 0;  // a known one-way step just made
+  // Most steps change too few features to be a candidate: no model queries for them.
+  std::size_t changed = 0;
+  for (std::size_t j = 0; j < previous.size() && j < current.size(); ++j) {
+    changed += previous[j] != current[j];
+  }
+  if (changed < kMinChanges) return;
   const auto features = unrestorableFeatures(model, previous, current, numActions);
   if (features.size() < kMinChanges) return;
   Candidate c{previous, current, step_, {}};

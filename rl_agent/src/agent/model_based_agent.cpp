@@ -373,15 +373,15 @@ int ModelBasedAgent::chooseAction(const rl_common::State& raw) {
   const rl_common::State s = binned(raw);
   const rl_common::State input = modelInput(s);
   if (deferral_) {
-    deferral_->observe(*currentView(), lastAction_ >= 0 ? lastInput_ : rl_common::State{},
-                       lastAction_, input, task_.numActions);
+    const auto view = currentView();  // the model as it is now, learned from the last step
+    deferral_->observe(*view, lastAction_ >= 0 ? lastInput_ : rl_common::State{}, lastAction_,
+                       input, task_.numActions);
     // The planner sees the one-way steps it must put off. Synchronously, learn() leaves the
     // model to this call; in real time the planners' views are filtered when that changes.
     // Only when something changed: a new model view caps the search tree's visit counts.
     const void* key = exploring_ ? deferral_->planningKey() : nullptr;
     if (!realTime_) {
       if (modelPending_ || key != deferralKey_) {
-        const auto view = model_->view();
         planner_->setModel(key != nullptr ? deferral_->planningView(view) : view);
       }
       modelPending_ = false;
