@@ -184,6 +184,77 @@ TEST(StepDeferral, DrawsAmongEquallyValuedOtherActions) {
   for (int a : {kEast, kWest, kWait}) EXPECT_GT(counts[a], 60) << "action " << a;
 }
 
+/// The corridor with a door at x == 4 instead of a key: pressing (kPickup) there opens it for
+/// good and lights its two lamps, which read 0 everywhere while it is closed.
+class DoorCorridor : public rl_common::ModelView {
+ public:
+  rl_common::StateActionInfo query(const State& s, int a) const override {
+    State next = s;
+    if (a == kEast) next[0] = std::min(4.0f, s[0] + 1.0f);
+    if (a == kWest) next[0] = std::max(0.0f, s[0] - 1.0f);
+    if (a == kPickup && s[0] == 4.0f) next[1] = 1.0f;
+    next[2] = next[3] = next[1] == 1.0f ? 5.0f : 0.0f;
+    rl_common::StateActionInfo info;
+    info.known = true;
+    for (float v : next) info.factored.push_back({{v, 1.0}});
+    return info;
+  }
+};
+
+/// Where `a` from `s` leads on `m` (these models are deterministic).
+State stepOn(const rl_common::ModelView& m, const State& s, int a) {
+  State next;
+  for (const auto& f : m.query(s, a).factored) next.push_back(f[0].first);
+  return next;
+}
+
+/// Takes `actions` in turn on `m` from `s`, `d` watching; returns where they led.
+State take(StepDeferral& d, const rl_common::ModelView& m, State s,
+           const std::vector<int>& actions) {
+  for (int a : actions) {
+    const State next = stepOn(m, s, a);
+    d.observe(m, s, a, next, 4);
+    s = next;
+  }
+  return s;
+}
+
+/// Three walks from x == 0 to 4 and back, then to x == 4 (the key corridor: 1 state in 4 on
+/// the key).
+const std::vector<int> kWalk = [] {
+  std::vector<int> v;
+  for (int i = 0; i < 3; ++i) {
+    v.insert(v.end(), 4, kEast);
+    v.insert(v.end(), 4, kWest);
+  }
+  v.insert(v.end(), 4, kEast);
+  return v;
+}();
+
+TEST(StepDeferral, ARuleMustSingleOutWhereItsStepHappens) {
+  // The door's old values (closed, lamps 0) held in every state before it opened: a rule of
+  // them would put pressing off everywhere, so it is not made.
+  const DoorCorridor door;
+  StepDeferral d(300);
+  d.observe(door, {}, -1, {0, 0, 0, 0}, 4);
+  State s = take(d, door, {0, 0, 0, 0}, kWalk);
+  ASSERT_EQ(s, (State{4, 0, 0, 0}));
+  s = take(d, door, s, {kPickup});
+  ASSERT_EQ(s, (State{4, 1, 5, 5}));
+  wait(d, door, s, 150);
+  EXPECT_TRUE(d.signatures().empty()) << "a rule that holds everywhere before its step";
+  // The key's old values (lamps at 5) held only on the key: a rule.
+  const KeyCorridor key;
+  StepDeferral e(300);
+  e.observe(key, {}, -1, {0, 0, 0, 0}, 4);
+  s = take(e, key, {0, 0, 0, 0}, kWalk);
+  s = take(e, key, s, {kWest, kWest, kPickup});
+  ASSERT_EQ(s, kHeld);
+  wait(e, key, s, 100);
+  ASSERT_EQ(e.signatures().size(), 1u);
+  EXPECT_EQ(e.signatures()[0].action, kPickup);
+}
+
 TEST(StepDeferral, RejectsANegativeStepCount) {
   EXPECT_THROW(StepDeferral(-1), std::invalid_argument);
 }

@@ -51,8 +51,7 @@ std::vector<std::size_t> unrestorableFeatures(const rl_common::ModelView& model,
   return changed;
 }
 
-bool OneWaySignature::appliesTo(const rl_common::State& s, int a) const {
-  if (a != action) return false;
+bool OneWaySignature::matches(const rl_common::State& s) const {
   std::size_t held = 0;
   for (const Change& c : changes) {
     if (c.feature < s.size() && s[c.feature] == c.from) ++held;
@@ -95,6 +94,9 @@ void StepDeferral::observe(const rl_common::ModelView& model, const rl_common::S
     candidates_.clear();  // a new episode: what the last one left undone says nothing
     return;
   }
+  // The states before this step (previous last), for the share test below.
+  past_.push_back(previous);
+  if (past_.size() > kPastStates) past_.pop_front();
   // A real step that undoes most of a candidate's or signature's changes shows it was not
   // one-way: the model took it for one while it knew too little.
   const auto undone = [&](const OneWaySignature& sig) {
@@ -144,6 +146,12 @@ void StepDeferral::observe(const rl_common::ModelView& model, const rl_common::S
   Candidate c{previous, current, step_, {}};
   c.signature.action = action;
   for (std::size_t j : features) c.signature.changes.push_back({j, previous[j], current[j]});
+  // A pattern the agent met almost everywhere before (the step's own state excluded) does not
+  // say where the step happens.
+  const std::size_t held = static_cast<std::size_t>(
+      std::count_if(past_.begin(), past_.end() - 1,
+                    [&](const rl_common::State& p) { return c.signature.matches(p); }));
+  if (static_cast<double>(held) > kMaxShare * static_cast<double>(past_.size() - 1)) return;
   candidates_.push_back(std::move(c));
   if (candidates_.size() > kMaxCandidates) candidates_.pop_front();
 }

@@ -10,15 +10,17 @@
 //
 // `StepDeferral` learns which steps are one-way from the agent's own steps. A real step that
 // changed at least 3 features the learned model predicts no action to give back (one step of
-// lookahead) is a candidate; when no real step undid it for 100 steps and the model still
-// cannot undo it, it becomes a rule: its action, where its features hold their old values, is
-// one-way. For a number of steps after each one-way step (and after the start), the region the
-// agent is in is explored first: the planner's model ends an imagined one-way step with no
-// reward (`DeferringView`), and a real one-way action is replaced by the best other action.
-// Measured in docs/science/lightworld-curiosity.md §4.1. Keeping track of reversibility while
-// exploring is the idea of safe exploration (Moldovan & Abbeel, "Safe Exploration in Markov
-// Decision Processes", ICML 2012) and of "Leave No Trace" (Eysenbach et al., ICLR 2018); the
-// test and the rules here are ours.
+// lookahead) is a candidate, unless the old values of those features held in most of the
+// states before it (then they do not say where the step happens: a closed door's lights read 0
+// everywhere); when no real step undid it for 100 steps and the model still cannot undo it, it
+// becomes a rule: its action, where its features hold their old values, is one-way. For a number of
+// steps after each one-way step (and after the start), the region the agent is in is explored
+// first: the planner's model ends an imagined one-way step with no reward (`DeferringView`), and a
+// real one-way action is replaced by the best other action. Measured in
+// docs/science/lightworld-curiosity.md §4.1. Keeping track of reversibility while exploring is the
+// idea of safe exploration (Moldovan & Abbeel, "Safe Exploration in Markov Decision Processes",
+// ICML 2012) and of "Leave No Trace" (Eysenbach et al., ICLR 2018); the test and the rules here are
+// ours.
 #include <cstddef>
 #include <deque>
 #include <functional>
@@ -55,9 +57,10 @@ struct OneWaySignature {
   int action = -1;
   std::vector<Change> changes;
 
-  /// True if `action` is this step's and `s` holds the old values of more than half of its
-  /// features.
-  bool appliesTo(const rl_common::State& s, int a) const;
+  /// True if `s` holds the old values of more than half of its features.
+  bool matches(const rl_common::State& s) const;
+  /// True if `a` is this step's action and matches(s).
+  bool appliesTo(const rl_common::State& s, int a) const { return a == action && matches(s); }
   bool operator==(const OneWaySignature& o) const {
     return action == o.action && changes == o.changes;
   }
@@ -133,11 +136,18 @@ class StepDeferral {
   /// A one-way step changes an object and what senses it at once; fewer changes are a move
   /// whose way back a young model does not know yet (door sensors that just appeared).
   static constexpr std::size_t kMinChanges = 3;
+  /// A rule must single out where its step happens: a pattern of old values that held in more
+  /// than this share of the states before the step (a door's lights read 0 everywhere while it
+  /// is closed) would put the action off everywhere.
+  static constexpr double kMaxShare = 0.5;
+  /// The states the share is measured on: those of the steps before a candidate.
+  static constexpr std::size_t kPastStates = 100;
 
   long steps_;
   long step_ = 0;
   long inRegion_ = 0;
   std::deque<Candidate> candidates_;
+  std::deque<rl_common::State> past_;  ///< the last kPastStates states, oldest first
   long deferred_ = 0;
   /// Shared with the views handed out; replaced (never changed) when a signature is added.
   std::shared_ptr<const std::vector<OneWaySignature>> signatures_;
