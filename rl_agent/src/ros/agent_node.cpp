@@ -33,13 +33,22 @@ bool allFinite(const std::vector<float>& v) {
 }  // namespace
 
 rl_common::EnvironmentDescription fromMessage(const rl_msgs::RLEnvDescription& m) {
-  const float n = m.num_states;
-  if (!(m.num_actions >= 1.0f) || m.num_actions != std::floor(m.num_actions)) {
-    throw std::invalid_argument("num_actions must be a whole number >= 1, got " +
+  // Checked as floats before any cast: a cast of NaN, inf or 3e9 to int is undefined.
+  const auto whole = [](float x, float most) {
+    return std::isfinite(x) && x >= 1.0f && x <= most && x == std::floor(x);
+  };
+  if (!whole(m.num_actions, static_cast<float>(kMaxDescribedActions))) {
+    throw std::invalid_argument("num_actions must be a whole number in [1, " +
+                                std::to_string(kMaxDescribedActions) + "], got " +
                                 std::to_string(m.num_actions));
   }
-  if (!(n >= 1.0f) || m.min_state_range.size() != static_cast<std::size_t>(n) ||
-      m.max_state_range.size() != static_cast<std::size_t>(n)) {
+  if (!whole(m.num_states, static_cast<float>(kMaxDescribedFeatures))) {
+    throw std::invalid_argument("num_states must be a whole number in [1, " +
+                                std::to_string(kMaxDescribedFeatures) + "], got " +
+                                std::to_string(m.num_states));
+  }
+  const auto n = static_cast<std::size_t>(m.num_states);
+  if (m.min_state_range.size() != n || m.max_state_range.size() != n) {
     throw std::invalid_argument("num_states (" + std::to_string(n) +
                                 ") does not match the range lengths (" +
                                 std::to_string(m.min_state_range.size()) + ", " +
@@ -48,6 +57,24 @@ rl_common::EnvironmentDescription fromMessage(const rl_msgs::RLEnvDescription& m
   if (!allFinite(m.min_state_range) || !allFinite(m.max_state_range) ||
       !std::isfinite(m.max_reward) || !std::isfinite(m.reward_range)) {
     throw std::invalid_argument("ranges and rewards must be finite");
+  }
+  for (std::size_t j = 0; j < n; ++j) {
+    if (m.min_state_range[j] > m.max_state_range[j]) {
+      throw std::invalid_argument("feature " + std::to_string(j) + ": min_state_range " +
+                                  std::to_string(m.min_state_range[j]) +
+                                  " is above max_state_range " +
+                                  std::to_string(m.max_state_range[j]));
+    }
+    // Distances are normalised by the span: an infinite one makes every state alike.
+    if (!std::isfinite(m.max_state_range[j] - m.min_state_range[j])) {
+      throw std::invalid_argument("feature " + std::to_string(j) +
+                                  ": the range's span overflows a float (" +
+                                  std::to_string(m.min_state_range[j]) + " to " +
+                                  std::to_string(m.max_state_range[j]) + ")");
+    }
+  }
+  if (m.reward_range < 0.0f) {
+    throw std::invalid_argument("reward_range must be >= 0, got " + std::to_string(m.reward_range));
   }
   rl_common::EnvironmentDescription d;
   d.numActions = static_cast<int>(m.num_actions);
@@ -108,6 +135,13 @@ void AgentNode::onDescription(const rl_msgs::RLEnvDescription::ConstPtr& msg) {
   } catch (const std::invalid_argument& e) {
     ROS_ERROR_STREAM_NAMED("agent", "dropping a malformed environment description: " << e.what());
     return;
+  }
+  for (std::size_t j = 0; j < description_->numFeatures(); ++j) {
+    if (description_->minFeatures[j] == description_->maxFeatures[j]) {
+      ROS_WARN_STREAM_NAMED("agent", "feature " << j << " has an empty range ("
+                                                << description_->minFeatures[j]
+                                                << "): it is taken as constant");
+    }
   }
   if (trueModelEnv_) {
     const std::string mismatch = trueModelMismatch(trueModelEnv_->describe(), *description_);
@@ -192,17 +226,31 @@ void AgentNode::onState(const rl_msgs::RLStateReward::ConstPtr& msg) {
     ROS_WARN_NAMED("agent", "dropping a state: no agent (see the errors above)");
     return;
   }
-  if (!validState(msg->state, "state") || !std::isfinite(msg->reward)) return;
+  if (!validState(msg->state, "state")) return;
+  if (!std::isfinite(msg->reward)) {
+    ROS_WARN_STREAM_NAMED("agent", "dropping a state with reward " << msg->reward);
+    return;
+  }
+  try {
+    act(*msg);
+  } catch (const std::exception& e) {
+    // The agent could not act (out of memory, a model error): say so and keep the node up.
+    ROS_ERROR_STREAM_NAMED("agent", "agent '" << options_.agent << "' failed on a state (step "
+                                              << steps_ << "): " << e.what());
+  }
+}
+
+void AgentNode::act(const rl_msgs::RLStateReward& state) {
   int action = -1;
   if (firstAction_) {
-    action = agent_->firstAction(msg->state);
+    action = agent_->firstAction(state.state);
     episodeReward_ = 0.0f;
     actions_ = 1;
     firstAction_ = false;
   } else {
-    episodeReward_ += msg->reward;
-    if (msg->terminal) {
-      agent_->lastAction(msg->reward);
+    episodeReward_ += state.reward;
+    if (state.terminal) {
+      agent_->lastAction(state.reward);
       ROS_INFO_STREAM_NAMED("agent", "Episode " << episode_ << " reward: " << episodeReward_);
       rl_msgs::RLExperimentInfo info;
       info.episode_number = episode_;
@@ -214,14 +262,14 @@ void AgentNode::onState(const rl_msgs::RLStateReward::ConstPtr& msg) {
       firstAction_ = true;
       return;
     }
-    action = agent_->nextAction(msg->reward, msg->state);
+    action = agent_->nextAction(state.reward, state.state);
     ++actions_;
   }
   rl_msgs::RLRewardBreakdown b;
   b.episode_number = episode_;
   b.step = static_cast<int>(steps_++);
   b.action = action;
-  b.external = msg->reward;
+  b.external = state.reward;
   if (const auto* src = dynamic_cast<const RewardBreakdownSource*>(agent_.get())) {
     const RewardBreakdown parts = src->lastRewardBreakdown();
     b.variance = parts.variance;

@@ -40,8 +40,15 @@
 
 namespace rl_agent {
 
+/// The most actions and features a description may declare: beyond them the agents' per-action
+/// tables and per-feature forests would exhaust memory (the original protocol's tasks have at
+/// most a few hundred).
+constexpr int kMaxDescribedActions = 65536;
+constexpr int kMaxDescribedFeatures = 65536;
+
 /// Converts a description message; throws std::invalid_argument if it is inconsistent
-/// (ranges not matching num_states, fewer than one action, non-finite values).
+/// (num_actions or num_states not a whole number in [1, 65536], ranges not matching num_states,
+/// min above max, a span or value that is not finite, a negative reward_range).
 rl_common::EnvironmentDescription fromMessage(const rl_msgs::RLEnvDescription& m);
 
 class AgentNode {
@@ -60,6 +67,9 @@ class AgentNode {
   void onDescription(const rl_msgs::RLEnvDescription::ConstPtr& msg);
   void onSeed(const rl_msgs::RLEnvSeedExperience::ConstPtr& msg);
   void onState(const rl_msgs::RLStateReward::ConstPtr& msg);
+  /// The agent's answer to a valid state: its action, or at a terminal state the episode's
+  /// end. Throws what the agent throws.
+  void act(const rl_msgs::RLStateReward& state);
   bool onReset(rl_msgs::Reset::Request& req, rl_msgs::Reset::Response& res);
 
  private:
