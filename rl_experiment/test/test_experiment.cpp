@@ -1,11 +1,19 @@
 #include "rl_experiment/runner/experiment.h"
 
+#include <dirent.h>
 #include <gtest/gtest.h>
+#include <sys/prctl.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -253,4 +261,77 @@ TEST(Experiment, ParallelTrialsShareTheCoresBetweenSearchThreads) {
   EXPECT_EQ(
       config({"--agent", "texplore", "--jobs", "2", "--searchthreads", "3"}).agent.searchthreads,
       3);
+}
+
+namespace {
+
+/// The pids of the processes whose parent is `parent` (from /proc/PID/stat).
+std::vector<pid_t> childrenOf(pid_t parent) {
+  std::vector<pid_t> out;
+  DIR* proc = ::opendir("/proc");
+  if (proc == nullptr) return out;
+  while (const dirent* e = ::readdir(proc)) {
+    const pid_t pid = static_cast<pid_t>(std::atol(e->d_name));
+    if (pid <= 0) continue;
+    std::ifstream f("/proc/" + std::string(e->d_name) + "/stat");
+    std::string stat((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    const std::size_t close = stat.rfind(')');  // the command name may hold spaces
+    if (close == std::string::npos) continue;
+    std::istringstream rest(stat.substr(close + 2));
+    char state = 0;
+    long ppid = 0;
+    rest >> state >> ppid;
+    if (ppid == parent) out.push_back(pid);
+  }
+  ::closedir(proc);
+  return out;
+}
+
+}  // namespace
+
+TEST(Experiment, ParallelTrialsDoNotOutliveAKilledRunner) {
+  // This process adopts the runner's orphans, so that it can see whether they end.
+  ASSERT_EQ(::prctl(PR_SET_CHILD_SUBREAPER, 1), 0);
+  char dir[] = "/tmp/rl_parent_death_XXXXXX";
+  ASSERT_NE(::mkdtemp(dir), nullptr);
+  const std::string out = std::string(dir) + "/run";
+  const pid_t runner = ::fork();
+  ASSERT_GE(runner, 0);
+  if (runner == 0) {
+    // Trials that take minutes: only a signal ends them within the test.
+    ::execl(EXPERIMENT_BIN, EXPERIMENT_BIN, "--agent", "qlearner", "--env", "lightworld", "--steps",
+            "100000000", "--trials", "2", "--jobs", "2", "--progress", "off", "--out", out.c_str(),
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  std::vector<pid_t> trials;
+  for (int i = 0; i < 400 && trials.size() < 2; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    trials = childrenOf(runner);
+  }
+  ASSERT_EQ(trials.size(), 2u) << "the runner did not start its two trial processes";
+  ASSERT_EQ(::kill(runner, SIGKILL), 0);  // the parent alone, as `kill -9 PID` does
+  int status = 0;
+  ASSERT_EQ(::waitpid(runner, &status, 0), runner);
+  // The orphans are now this process's children; each must end within 10 s.
+  std::set<pid_t> left(trials.begin(), trials.end());
+  for (int i = 0; i < 200 && !left.empty(); ++i) {
+    for (auto it = left.begin(); it != left.end();) {
+      const pid_t done = ::waitpid(*it, &status, WNOHANG);
+      if (done == *it) {
+        EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << "trial pid " << *it;
+        it = left.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    if (!left.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  EXPECT_TRUE(left.empty()) << left.size() << " trial processes outlived the runner";
+  for (pid_t pid : left) {
+    ::kill(pid, SIGKILL);
+    ::waitpid(pid, &status, 0);
+  }
+  ::prctl(PR_SET_CHILD_SUBREAPER, 0);
+  std::system(("rm -rf " + std::string(dir)).c_str());
 }

@@ -2,11 +2,15 @@
 
 #include <dirent.h>
 #include <sys/stat.h>
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -480,6 +484,7 @@ int Experiment::run(std::ostream& out, std::ostream& err) {
   out.flush();
   err.flush();
   std::fflush(nullptr);
+  [[maybe_unused]] const pid_t parent = ::getpid();
   while (next < pending.size() || !running.empty()) {
     while (next < pending.size() && int(running.size()) < config_.jobs) {
       int fds[2];
@@ -488,6 +493,12 @@ int Experiment::run(std::ostream& out, std::ostream& err) {
       const pid_t pid = ::fork();
       if (pid < 0) throw std::runtime_error("Experiment::run(): fork failed");
       if (pid == 0) {
+#ifdef __linux__
+        // A trial must not outlive the runner: `kill PID` of the parent alone (not the
+        // terminal's Ctrl-C, which reaches the whole group) would leave it writing on.
+        ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+        if (::getppid() != parent) ::_exit(1);  // the runner died before the line above
+#endif
         ::close(fds[0]);
         int status = 0;
         try {
