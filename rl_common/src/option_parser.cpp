@@ -48,8 +48,30 @@ double parseReal(const std::string& text) {
   return v;
 }
 
+/// Unsigned values span [0, 2^64 - 1] (seeds: the reset service takes any uint64): parsed as
+/// unsigned, not through long long.
+unsigned long long parseUnsigned(const std::string& text) {
+  const std::size_t first = text.find_first_not_of(" \t");
+  if (first != std::string::npos && text[first] == '-') {
+    parseInteger(text);  // "expected an integer" for text that is not one
+    throw std::invalid_argument("expected an integer >= 0");
+  }
+  if (text.empty()) throw std::invalid_argument("expected an integer");
+  char* end = nullptr;
+  errno = 0;
+  const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
+  if (*end != '\0') throw std::invalid_argument("expected an integer");
+  if (errno == ERANGE) throw std::invalid_argument("integer out of range");
+  return v;
+}
+
 template <class T>
 T checkedIntegral(const std::string& text) {
+  if constexpr (std::is_unsigned_v<T>) {
+    const unsigned long long v = parseUnsigned(text);
+    if (v > std::numeric_limits<T>::max()) throw std::invalid_argument("integer out of range");
+    return static_cast<T>(v);
+  }
   const long long v = parseInteger(text);
   if (std::is_unsigned_v<T> && v < 0) throw std::invalid_argument("expected an integer >= 0");
   if (static_cast<long double>(v) > static_cast<long double>(std::numeric_limits<T>::max()) ||

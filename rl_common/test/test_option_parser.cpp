@@ -181,3 +181,18 @@ TEST(OptionParser, IntegerListsAreCommaSeparated) {
   }
   EXPECT_NE(p.help().find("--nstates <int[,int...]>"), std::string::npos) << p.help();
 }
+
+TEST(OptionParser, UnsignedOptionsTakeTheWholeUint64Range) {
+  // The reset service's seed is a uint64: the command line takes the same range.
+  Config c;
+  OptionParser p = makeParser(&c);
+  p.parse(std::vector<std::string>{"--seed", "18446744073709551615"});
+  EXPECT_EQ(c.seed, 18446744073709551615UL);
+  p.parse(std::vector<std::string>{"--seed", "9223372036854775808"});  // 2^63
+  EXPECT_EQ(c.seed, 9223372036854775808UL);
+  EXPECT_NE(errorOf({"--seed", "18446744073709551616"}).find("integer out of range"),
+            std::string::npos);
+  EXPECT_NE(errorOf({"--seed", "-1"}).find("expected an integer >= 0"), std::string::npos);
+  EXPECT_NE(errorOf({"--seed", "-x"}).find("expected an integer"), std::string::npos);
+  EXPECT_NE(errorOf({"--seed", "12abc"}).find("expected an integer"), std::string::npos);
+}
