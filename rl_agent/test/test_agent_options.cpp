@@ -101,7 +101,13 @@ TEST(AgentOptions, ValuesAreValidated) {
   EXPECT_NE(errorOf({"--gamma", "1.5"}).find("must be in [0, 1]"), std::string::npos);
   EXPECT_NE(errorOf({"--planner", "astar"}).find("valid values: vi, valueiteration"),
             std::string::npos);
-  EXPECT_NE(errorOf({"--nmodels", "0"}).find("must be > 0"), std::string::npos);
+  EXPECT_NE(errorOf({"--nmodels", "0"}).find("must be in [1, 1000]"), std::string::npos);
+  // Values that would exhaust memory or plan one step for hours are refused up front.
+  EXPECT_NE(errorOf({"--nmodels", "1000000000"}).find("must be in [1, 1000]"), std::string::npos);
+  EXPECT_NE(errorOf({"--history", "1000000000"}).find("must be in [0, 100]"), std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "texplore", "--rollouts", "9223372036854775807"})
+                .find("must be in [0, 1000000]"),
+            std::string::npos);
   EXPECT_EQ(parse({"--agent", "texplore", "--planner", "realtime-uct"}).planner, "parallel-uct");
 }
 

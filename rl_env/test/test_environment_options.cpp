@@ -98,7 +98,13 @@ TEST(EnvironmentOptions, EachOptionOnlyForItsEnvironments) {
 
 TEST(EnvironmentOptions, BadValuesAreRejectedNamingTheOption) {
   for (const std::vector<std::string>& args :
-       {std::vector<std::string>{"--delay", "-1"}, {"--nsectors", "0"}, {"--nstocks", "x"}}) {
+       {std::vector<std::string>{"--delay", "-1"},
+        {"--nsectors", "0"},
+        {"--nstocks", "x"},
+        // Values that would exhaust memory (a delay of 1e9 queued 3.3 GB in 15 s).
+        {"--delay", "1000000000"},
+        {"--nsectors", "100000"},
+        {"--nstocks", "100000"}}) {
     OptionParser parser("env", "--env <type>");
     EnvironmentOptions o;
     rl_env::addEnvironmentOptions(parser, &o);

@@ -26,6 +26,8 @@ TEST(Stocks, DescriptionFollowsTheSectorCounts) {
   EXPECT_EQ(small.risingIndex(1, 2), 2 + 4 + 2);
   EXPECT_THROW(Stocks(1, true, 0, 3), std::invalid_argument);
   EXPECT_THROW(Stocks(1, true, 3, 0), std::invalid_argument);
+  EXPECT_THROW(Stocks(1, true, 1000, 1000), std::invalid_argument);  // 1,001,000 features
+  EXPECT_NO_THROW(Stocks(1, true, 256, 255));                        // 65,536
 }
 
 // 2 sectors of 3 stocks: sector 0 owned with 2 of 3 rising, sector 1 not owned with 1 rising.

@@ -56,7 +56,8 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
                    {"delayed-parallel-uct", "delayed-parallel-uct"},
                    {"delayedparalleluct", "delayed-parallel-uct"}},
                   "planner");
-  p.value("nmodels", &o->nmodels, "trees per forest", greaterThan(0));
+  // Upper bounds keep a typo from exhausting memory or planning for hours in one step.
+  p.value("nmodels", &o->nmodels, "trees per forest", inRange(1, 1000));
   p.flag("reltrans", &o->reltrans, true, "predict relative changes s'-s (default)");
   p.flag("abstrans", &o->reltrans, false, "predict absolute next states s'");
   p.value("v|b", &o->v, "VANIR variance (tree disagreement) reward coefficient", atLeast(0.0f));
@@ -64,7 +65,7 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
   p.choice("novelty", &o->novelty, {"stateaction", "state"},
            "VANIR's novelty: of (s, a) against the states where a was taken (stateaction, the "
            "original), or of s against the states where any action was taken (state)");
-  p.value("history", &o->history, "action-history length", atLeast(0));
+  p.value("history", &o->history, "action-history length", inRange(0, 100));
   p.value("nstates", &o->nstates,
           "bins per feature: one count for every feature, or one per feature, comma-separated "
           "(0: that feature is not binned; 0 alone: no binning)",
@@ -123,7 +124,7 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
   p.value("rollouts", &o->rollouts,
           "UCT rollouts per step, planned synchronously for reproducible runs (0: plan in real "
           "time at --actrate)",
-          atLeast(0L));
+          inRange(0L, 1000000L));
   p.value("searchthreads", &o->searchthreads,
           "real-time UCT: planning threads, each searching its own tree, whose root values are "
           "averaged (0: one per core)",

@@ -17,9 +17,10 @@ void addEnvironmentOptions(rl_common::OptionParser& parser, EnvironmentOptions* 
 void addEnvironmentVariantOptions(rl_common::OptionParser& parser, EnvironmentOptions* o) {
   parser.flag("stochastic", &o->stochastic, true, "noisy dynamics (the default)");
   parser.flag("deterministic", &o->stochastic, false, "noise-free dynamics");
-  parser.value("delay", &o->delay, "delay in steps (mcar, tworooms)", rl_common::atLeast(0));
-  parser.value("nsectors", &o->nsectors, "number of sectors (stocks)", rl_common::greaterThan(0));
-  parser.value("nstocks", &o->nstocks, "stocks per sector (stocks)", rl_common::greaterThan(0));
+  // Upper bounds keep a typo from exhausting memory (a delay of 1e9 queued 3.3 GB in 15 s).
+  parser.value("delay", &o->delay, "delay in steps (mcar, tworooms)", rl_common::inRange(0, 1000));
+  parser.value("nsectors", &o->nsectors, "number of sectors (stocks)", rl_common::inRange(1, 1000));
+  parser.value("nstocks", &o->nstocks, "stocks per sector (stocks)", rl_common::inRange(1, 1000));
   parser.flag("lag", &o->lag, true, "second-order brake dynamics (car2to7, car7to2, carrandom)");
   parser.flag("nolag", &o->lag, false, "no brake lag (car*, the default)");
   parser.flag("highvar", &o->highvar, true, "high-variance fuel costs (fuelworld)");

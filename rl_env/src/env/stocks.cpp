@@ -12,6 +12,14 @@ Stocks::Stocks(std::uint64_t seed, bool stochastic, int nsectors, int nstocks)
     throw std::invalid_argument("Stocks::Stocks(): nsectors and nstocks must be > 0, got " +
                                 std::to_string(nsectors) + " and " + std::to_string(nstocks));
   }
+  // One feature per sector (owned) and per stock (rising): agents learn a forest per feature.
+  const long long features = static_cast<long long>(nsectors) * (nstocks + 1LL);
+  if (features > kMaxFeatures) {
+    throw std::invalid_argument("Stocks::Stocks(): " + std::to_string(nsectors) + " sectors of " +
+                                std::to_string(nstocks) + " stocks make " +
+                                std::to_string(features) + " features; at most " +
+                                std::to_string(kMaxFeatures));
+  }
   reset();
 }
 

@@ -24,7 +24,11 @@ namespace rl_env {
 
 class Stocks : public rl_common::Environment {
  public:
-  /// Throws std::invalid_argument unless both counts are positive.
+  /// The most features (sectors x (stocks + 1)) a task may have: the agents' limit for a
+  /// description (rl_agent::kMaxDescribedFeatures).
+  static constexpr long long kMaxFeatures = 65536;
+  /// Throws std::invalid_argument unless both counts are positive and the task has at most
+  /// kMaxFeatures features.
   Stocks(std::uint64_t seed, bool stochastic, int nsectors, int nstocks);
 
   // rl_common::Environment
