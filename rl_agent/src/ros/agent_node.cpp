@@ -100,7 +100,17 @@ AgentNode::AgentNode(ros::NodeHandle nh, const AgentOptions& options,
     }
   }
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
-  actionPub_ = nh_.advertise<rl_msgs::RLAction>("rl_agent/rl_action", 1);
+  // An action published before the environment is connected is lost, and the pair then waits
+  // on each other for good (an agent restarted beside a running env acts on its latched state
+  // at once): such an action is held and sent when the environment subscribes.
+  actionPub_ = nh_.advertise<rl_msgs::RLAction>(
+      "rl_agent/rl_action", 1, [this](const ros::SingleSubscriberPublisher& pub) {
+        if (!heldAction_) return;
+        pub.publish(*heldAction_);
+        ROS_INFO_STREAM_NAMED("agent", "sent the held action " << heldAction_->action << " to "
+                                                               << pub.getSubscriberName());
+        heldAction_.reset();
+      });
   infoPub_ = nh_.advertise<rl_msgs::RLExperimentInfo>("rl_agent/rl_experiment_info", 1);
   breakdownPub_ = nh_.advertise<rl_msgs::RLRewardBreakdown>("rl_agent/rl_reward_breakdown", 10);
   descriptionSub_ =
@@ -279,6 +289,13 @@ void AgentNode::act(const rl_msgs::RLStateReward& state) {
   breakdownPub_.publish(b);
   rl_msgs::RLAction a;
   a.action = action;
+  if (actionPub_.getNumSubscribers() == 0) {
+    heldAction_ = a;
+    ROS_INFO_STREAM_NAMED("agent",
+                          "holding action " << action << " until an environment subscribes");
+    return;
+  }
+  heldAction_.reset();
   actionPub_.publish(a);
 }
 

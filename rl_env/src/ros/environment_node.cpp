@@ -70,17 +70,23 @@ void EnvironmentNode::sendSeeds(const ros::SingleSubscriberPublisher& pub) {
 
 void EnvironmentNode::publishFirstStateWhenReady() {
   if (firstStateSent_) return;
-  // An agent listens on all three topics before it can act; the seeds go out on connection.
-  // roscpp counts a subscriber before it runs the connect callback (queued on this node's
-  // spinner, behind this timer), so wait for the seeds to have been sent, not only counted.
-  if (statePub_.getNumSubscribers() == 0 || seedPub_.getNumSubscribers() == 0 ||
-      descriptionPub_.getNumSubscribers() == 0 || !seedsSent_) {
+  // An agent can act once it hears states and its actions reach this node. Seeds are optional
+  // in the protocol (an agent written to rl_msgs may not subscribe to them), but one that does
+  // gets them first: its subscriptions come up together, so wait a moment for the others, and
+  // then for the seeds to have been sent (roscpp counts a subscriber before it runs the connect
+  // callback, queued on this node's spinner behind this timer).
+  const ros::WallTime now = ros::WallTime::now();
+  if (statePub_.getNumSubscribers() == 0 || actionSub_.getNumPublishers() == 0) {
+    readySince_ = ros::WallTime();
     return;
   }
+  if (readySince_.isZero()) readySince_ = now;
+  if (now - readySince_ < ros::WallDuration(0.5)) return;
+  if (seedPub_.getNumSubscribers() > 0 && !seedsSent_) return;
   firstStateSent_ = true;
   readyTimer_.stop();
   // Let the seeds sent on connection reach the agent before the first state.
-  ros::WallDuration(0.2).sleep();
+  if (seedsSent_) ros::WallDuration(0.2).sleep();
   ROS_INFO_NAMED("env", "agent connected; publishing the first state");
   publishState(0.0f);
 }

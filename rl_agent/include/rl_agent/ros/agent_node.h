@@ -22,6 +22,7 @@
  */
 #pragma once
 
+#include <rl_msgs/RLAction.h>
 #include <rl_msgs/RLEnvDescription.h>
 #include <rl_msgs/RLEnvSeedExperience.h>
 #include <rl_msgs/RLStateReward.h>
@@ -92,6 +93,8 @@ class AgentNode {
   rl_msgs::RLStateReward::ConstPtr earlyState_;                     ///< the latest such state
   ros::Subscriber descriptionSub_, stateSub_, seedSub_;
   ros::Publisher actionPub_, infoPub_, breakdownPub_;
+  /// An action chosen while no environment subscribed to rl_action; sent when one does.
+  std::optional<rl_msgs::RLAction> heldAction_;
   ros::ServiceServer resetSrv_;
 };
 

@@ -60,7 +60,8 @@ class EnvironmentNode {
   std::unique_ptr<rl_common::Environment> env_;
   bool prints_;
   bool firstStateSent_ = false;
-  bool seedsSent_ = false;  // the connect callback has sent the seeds to an agent
+  bool seedsSent_ = false;    // the connect callback has sent the seeds to an agent
+  ros::WallTime readySince_;  // since when a client hears states and publishes actions
   long steps_ = 0;
   ros::Publisher descriptionPub_, seedPub_, statePub_;
   ros::Subscriber actionSub_, infoSub_;
