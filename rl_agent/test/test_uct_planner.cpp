@@ -11,8 +11,11 @@
 #include <memory>
 #include <mutex>
 #include <stdexcept>
+#include <thread>
 #include <utility>
 #include <vector>
+
+#include "rl_common/stop_request.h"
 
 using rl_agent::UctPlanner;
 using rl_common::Experience;
@@ -670,4 +673,27 @@ TEST(UctPlanner, MinOutcomeProbabilityDropsImplausibleFeatureValues) {
   UctPlanner::Config bad = config(1, 0.9, 5.0f);
   bad.minOutcomeProbability = 1.5;
   EXPECT_THROW(UctPlanner(bad, 1), std::invalid_argument);
+}
+
+TEST(UctPlanner, AStopRequestEndsAStepAtTheNextRollout) {
+  // A SIGINT handler calls rl_common::requestStop(): a step of 100 million rollouts (minutes
+  // here) ends within a rollout of it.
+  UctPlanner planner(config(2, 0.9, 5.0f), 7);
+  planner.setModel(view(chain));
+  rl_common::clearStopRequest();
+  std::thread stopper([] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    rl_common::requestStop();
+  });
+  const auto start = std::chrono::steady_clock::now();
+  const long done = planner.plan(State{0.0f}, PlanningBudget::ofRollouts(100000000));
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stopper.join();
+  rl_common::clearStopRequest();
+  EXPECT_GT(done, 0);
+  EXPECT_LT(done, 100000000);
+  EXPECT_LT(seconds, 5.0);
+  // Cleared, the next step plans its whole budget again.
+  EXPECT_EQ(planner.plan(State{0.0f}, PlanningBudget::ofRollouts(500)), 500);
 }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "rl_agent/planner/feature_ranges.h"
+#include "rl_common/stop_request.h"
 
 namespace rl_agent {
 
@@ -205,6 +206,7 @@ double StateSpacePlanner::backup(int s, int a) const {
 
 bool StateSpacePlanner::allows(const rl_common::PlanningBudget& budget, long done) const {
   if (done >= config_.maxIterations) return false;
+  if (rl_common::stopRequested()) return false;  // SIGINT: end the step now
   if (budget.rollouts > 0 && done >= budget.rollouts) return false;
   if (budget.deadline != std::chrono::steady_clock::time_point::max() && done > 0 &&
       std::chrono::steady_clock::now() >= budget.deadline) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "rl_agent/planner/feature_ranges.h"
+#include "rl_common/stop_request.h"
 
 namespace rl_agent {
 
@@ -152,6 +153,7 @@ long UctPlanner::plan(const State& s, const rl_common::PlanningBudget& budget) {
     if (budget.deadline != noDeadline && std::chrono::steady_clock::now() >= budget.deadline) {
       break;
     }
+    if (rl_common::stopRequested()) break;  // SIGINT: end the step now, not after the budget
   }
   return done;
 }
