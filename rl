@@ -131,7 +131,10 @@ run_tsan_tests() {
     xml=$results/tsan-$t.xml
     rm -f "$xml"
     rc=0
-    TSAN_OPTIONS="halt_on_error=1 exitcode=66" "$tsan/devel/lib/rl_agent/$t" \
+    # The sourced workspace puts the uninstrumented libraries on LD_LIBRARY_PATH, which
+    # overrides the binaries' RUNPATH: put the instrumented ones first.
+    LD_LIBRARY_PATH="$tsan/devel/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" \
+      TSAN_OPTIONS="halt_on_error=1 exitcode=66" "$tsan/devel/lib/rl_agent/$t" \
       --gtest_output="xml:$xml" || rc=$?
     # A race aborts the binary (no results) or fails it after passing tests: record it.
     if [ "$rc" -ne 0 ] && { [ ! -s "$xml" ] || grep -q 'failures="0"' "$xml"; }; then

@@ -109,9 +109,8 @@ RealTimeFigures realTimeRun(int steps, float actrate, std::uint64_t seed, int th
     last = now;
     rollouts.push_back(static_cast<double>(s.agent->lastRollouts()));
   }
-  std::printf(
-      "real-time mode: LightWorld, texplore v=1 n=3, %g Hz, %d steps, %d search thread%s\n",
-      actrate, steps, threads, threads == 1 ? "" : "s");
+  std::printf("real-time mode: LightWorld, texplore v=1 n=3, %g Hz, %d steps, %d search thread%s\n",
+              actrate, steps, threads, threads == 1 ? "" : "s");
   std::printf("rollouts per action: median %.0f  p10 %.0f  p90 %.0f\n", quantile(rollouts, 0.5),
               quantile(rollouts, 0.1), quantile(rollouts, 0.9));
   std::printf("step interval ms:    median %.1f  p99 %.1f  max %.1f\n", quantile(intervals, 0.5),
