@@ -277,3 +277,14 @@ TEST(AgentOptions, DeferIsTheExplorersOwnUnlessGiven) {
   // Not given, a history only turns the explorer's deferral off.
   EXPECT_EQ(errorOf({"--agent", "texplore", "--v", "1", "--n", "3", "--history", "2"}), "");
 }
+
+TEST(AgentOptions, DeferRegionsIsEveryRegionUnlessGiven) {
+  EXPECT_EQ(parse({"--agent", "texplore"}).deferregions, 0);
+  EXPECT_EQ(parse({"--agent", "texplore", "--deferregions", "2"}).deferregions, 2);
+  EXPECT_NE(errorOf({"--agent", "texplore", "--deferregions", "-1"}).find("--deferregions"),
+            std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "texplore", "--deferregions", "9999999"}).find("--deferregions"),
+            std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "qlearner", "--deferregions", "2"}).find("--deferregions"),
+            std::string::npos);
+}

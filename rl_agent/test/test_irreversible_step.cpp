@@ -2,6 +2,8 @@
 // (StepDeferral, DeferringView).
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 #include "rl_agent/agent/irreversible_step.h"
 
 namespace rl_agent {
@@ -127,6 +129,30 @@ TEST(StepDeferral, ConfirmsAOneWayStepAfterItsWindowAndPutsTheNextOneOff) {
   EXPECT_EQ(d.stepsInRegion(), 0);
   wait(d, m, kHeld, 100);
   EXPECT_EQ(d.signatures().size(), 1u) << "the same signature is recorded once";
+}
+
+TEST(StepDeferral, DefersOnlyInTheFirstRegionsWhenLimited) {
+  const KeyCorridor m;
+  rl_common::Random rng(1);
+  const std::vector<double> q = {0.1, 0.5, 0.9, 0.2};  // pickup valued highest
+  StepDeferral limited(300, 1), unlimited(300);
+  for (StepDeferral* d : {&limited, &unlimited}) {
+    learnThePickup(*d, m);  // the confirmation begins region 1 at the pickup
+    EXPECT_EQ(d->regions(), 1);
+    EXPECT_TRUE(d->active());
+    d->observe(m, {}, -1, kOnKey, 4);  // a new episode: no new region counted
+    EXPECT_EQ(d->regions(), 1);
+    EXPECT_EQ(d->choose(kOnKey, kPickup, q, rng), kWest);
+    d->observe(m, kOnKey, kPickup, kHeld, 4);  // a known one-way step: region 2
+    EXPECT_EQ(d->regions(), 2);
+    EXPECT_EQ(d->stepsInRegion(), 0);
+  }
+  EXPECT_FALSE(limited.active()) << "past its one region";
+  EXPECT_EQ(limited.planningKey(), nullptr);
+  EXPECT_EQ(limited.choose(kOnKey, kPickup, q, rng), kPickup);
+  EXPECT_TRUE(unlimited.active());
+  EXPECT_EQ(unlimited.choose(kOnKey, kPickup, q, rng), kWest);
+  EXPECT_THROW(StepDeferral(300, -1), std::invalid_argument);
 }
 
 TEST(StepDeferral, ThePlannersModelEndsAOneWayStepWithNoReward) {

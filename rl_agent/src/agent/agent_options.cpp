@@ -89,6 +89,10 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
           "action gave back) for this many steps after each one (default: 300 for "
           "--explore variancenovelty with --v or --n above 0, else 0; 0: never, as the original)",
           atLeast(0L));
+  p.value("deferregions", &o->deferregions,
+          "with --defer, put off one-way steps only in the first this many regions (a region "
+          "begins at each one-way step; 0: in every region)",
+          inRange(0L, 1000000L));
   p.value("depth", &o->depth, "UCT: at most this many simulated actions per rollout",
           greaterThan(0));
   p.flag("bonusonce", &o->bonusonce, true,
@@ -208,11 +212,12 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
   lambdaAgents.push_back("sarsa");
   requireAgent(p, o, "lambda", lambdaAgents);
   for (const char* option :
-       {"actrate",  "m",           "model",      "planner",    "combo",         "nmodels",
-        "reltrans", "abstrans",    "v",          "n",          "history",       "rollouts",
-        "tau",      "pathvisits",  "ucb",        "ucbc",       "bonusonce",     "taskucb",
-        "taskucbc", "depth",       "minprob",    "novelty",    "taskplanner",   "taskdepth",
-        "taskkey",  "taskminprob", "tasksweeps", "taskrecent", "searchthreads", "defer"}) {
+       {"actrate",     "m",           "model",      "planner",    "combo",         "nmodels",
+        "reltrans",    "abstrans",    "v",          "n",          "history",       "rollouts",
+        "tau",         "pathvisits",  "ucb",        "ucbc",       "bonusonce",     "taskucb",
+        "taskucbc",    "depth",       "minprob",    "novelty",    "taskplanner",   "taskdepth",
+        "taskkey",     "taskminprob", "tasksweeps", "taskrecent", "searchthreads", "defer",
+        "deferregions"}) {
     requireAgent(p, o, option, kModelBased);
   }
   const bool modelBased = isOneOf(o.agent, kModelBased);

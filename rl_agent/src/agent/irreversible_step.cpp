@@ -78,10 +78,16 @@ rl_common::StateActionInfo DeferringView::query(const rl_common::State& input, i
   return info;
 }
 
-StepDeferral::StepDeferral(long steps)
-    : steps_(steps), signatures_(std::make_shared<const std::vector<OneWaySignature>>()) {
+StepDeferral::StepDeferral(long steps, long maxRegions)
+    : steps_(steps),
+      maxRegions_(maxRegions),
+      signatures_(std::make_shared<const std::vector<OneWaySignature>>()) {
   if (steps < 0) {
     throw std::invalid_argument("StepDeferral: steps must be >= 0, got " + std::to_string(steps));
+  }
+  if (maxRegions < 0) {
+    throw std::invalid_argument("StepDeferral: maxRegions must be >= 0, got " +
+                                std::to_string(maxRegions));
   }
 }
 
@@ -125,6 +131,7 @@ void StepDeferral::observe(const rl_common::ModelView& model, const rl_common::S
     Candidate c = std::move(candidates_.front());
     candidates_.pop_front();
     if (unrestorableFeatures(model, c.from, c.to, numActions).empty()) continue;
+    if (step_ - c.step < inRegion_) ++regions_;  // a region begins at the confirmed step
     inRegion_ = std::min(inRegion_, step_ - c.step);
     const bool known = std::any_of(signatures_->begin(), signatures_->end(),
                                    [&](const auto& s) { return s == c.signature; });
@@ -134,7 +141,10 @@ void StepDeferral::observe(const rl_common::ModelView& model, const rl_common::S
       signatures_ = std::move(next);
     }
   }
-  if (oneWay(previous, action)) inRegion_ = 0;  // a known one-way step just made
+  if (oneWay(previous, action)) {  // a known one-way step just made: a new region
+    inRegion_ = 0;
+    ++regions_;
+  }
   // Most steps change too few features to be a candidate: no model queries for them.
   std::size_t changed = 0;
   for (std::size_t j = 0; j < previous.size() && j < current.size(); ++j) {

@@ -201,7 +201,9 @@ ModelBasedAgent::ModelBasedAgent(const AgentOptions& options,
   // The explorer's own deferral, unless given; an action history never comes back, so with
   // --history every step would look one-way.
   const long defer = options.defer >= 0 ? options.defer : explorer->deferSteps;
-  if (defer > 0 && options.history == 0) deferral_ = std::make_unique<StepDeferral>(defer);
+  if (defer > 0 && options.history == 0) {
+    deferral_ = std::make_unique<StepDeferral>(defer, options.deferregions);
+  }
 
   if (binsStates(options) && options.model != "m5tree") {
     grid_ = StateGrid(options.nstates, task.minFeatures, task.maxFeatures);

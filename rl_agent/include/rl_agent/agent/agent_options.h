@@ -53,6 +53,9 @@ struct AgentOptions {
   /// 0: never, as the original; -1: the explorer's own (Explorer::deferSteps: 300 for
   /// TEXPLORE-VANIR with a bonus, 0 for the others).
   long defer = -1;
+  /// With the deferral, defer only in the first this many regions (StepDeferral's maxRegions);
+  /// 0: in every region.
+  long deferregions = 0;
   int depth = 200;  ///< UCT's rollout depth cap (the original's MAX_DEPTH)
   /// UCT's bound (UctPlanner::UcbBound): "range" (the original's) or "normalized".
   std::string ucb = "range";

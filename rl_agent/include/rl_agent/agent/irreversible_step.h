@@ -80,10 +80,13 @@ class DeferringView : public rl_common::ModelView {
 };
 
 /// Defers one-way steps for the first `steps` steps after each one-way step the agent made
-/// (and after the start of an episode).
+/// (and after the start of an episode). With `maxRegions` > 0 it defers in the first
+/// `maxRegions` regions only: a region is counted when one begins at a one-way step, at a known
+/// one-way step made or at a confirmed one (not at an episode's start). On LightWorld, 2 puts
+/// off the key in the second room and nothing after (docs/science/lightworld-curiosity.md §7).
 class StepDeferral {
  public:
-  explicit StepDeferral(long steps);
+  explicit StepDeferral(long steps, long maxRegions = 0);
 
   /// Call once per real step, with the previous state (empty at the start of an episode), the
   /// action taken there and the current state, on the model that has learned the step. A step the
@@ -96,7 +99,10 @@ class StepDeferral {
                const rl_common::State& current, int numActions);
 
   /// True while one-way steps are put off: the region's steps last and some are known.
-  bool active() const { return inRegion_ < steps_ && !signatures_->empty(); }
+  bool active() const {
+    return inRegion_ < steps_ && !signatures_->empty() &&
+           (maxRegions_ == 0 || regions_ <= maxRegions_);
+  }
 
   /// `base` wrapped in a DeferringView while active(), else `base`.
   std::shared_ptr<const rl_common::ModelView> planningView(
@@ -121,6 +127,7 @@ class StepDeferral {
 
   long steps() const { return steps_; }
   long stepsInRegion() const { return inRegion_; }
+  long regions() const { return regions_; }    ///< regions begun so far (see the constructor)
   long deferred() const { return deferred_; }  ///< real actions replaced so far
   const std::vector<OneWaySignature>& signatures() const { return *signatures_; }
 
@@ -144,8 +151,10 @@ class StepDeferral {
   static constexpr std::size_t kPastStates = 100;
 
   long steps_;
+  long maxRegions_;
   long step_ = 0;
   long inRegion_ = 0;
+  long regions_ = 0;
   std::deque<Candidate> candidates_;
   std::deque<rl_common::State> past_;  ///< the last kPastStates states, oldest first
   long deferred_ = 0;
