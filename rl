@@ -139,12 +139,8 @@ run_tsan_tests() {
       --gtest_output="xml:$xml" || rc=$?
     # A race aborts the binary (no results) or fails it after passing tests: record it.
     if [ "$rc" -ne 0 ] && { [ ! -s "$xml" ] || grep -q 'failures="0"' "$xml"; }; then
-      cat >"$xml" <<XML
-<?xml version="1.0"?>
-<testsuite name="tsan" tests="1" failures="1"><testcase classname="tsan" name="$t">
-<failure message="ThreadSanitizer: exit status $rc (data race?); see .build/run_tests.log"/>
-</testcase></testsuite>
-XML
+      sanitizer_failure tsan "$results" "$t" \
+        "ThreadSanitizer: exit status $rc (data race?); see .build/run_tests.log"
     fi
   done
 }
@@ -158,27 +154,28 @@ run_asan_tests() {
   local results=$1 asan=$BUILD_ROOT/asan
   mkdir -p "$results" "$asan/devel/lib/python3/dist-packages"
   log "building the unit tests with AddressSanitizer and UndefinedBehaviorSanitizer"
-  local flags="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined"
+  local san="-fsanitize=address,undefined"
   if [ ! -f "$asan/build/CMakeCache.txt" ]; then
     cmake -S "$ROOT" -B "$asan/build" -DCATKIN_DEVEL_PREFIX="$asan/devel" \
       -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DCATKIN_ENABLE_TESTING=ON -DCMAKE_CXX_FLAGS="$flags" \
-      -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
-      -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" >"$asan/configure.log" 2>&1 ||
-      { asan_failure "$results" build "configure failed; see .build/asan/configure.log"; return 1; }
+      -DCATKIN_ENABLE_TESTING=ON \
+      -DCMAKE_CXX_FLAGS="$san -fno-omit-frame-pointer -fno-sanitize-recover=undefined" \
+      -DCMAKE_EXE_LINKER_FLAGS="$san" -DCMAKE_SHARED_LINKER_FLAGS="$san" \
+      >"$asan/configure.log" 2>&1 ||
+      { sanitizer_failure asan "$results" build "configure failed; see .build/asan/configure.log"; return 1; }
   fi
   # The gtest targets only (catkin_add_gtest: no nodes, no rostest binaries).
   local targets
   mapfile -t targets < <(cmake --build "$asan/build" --target help |
     sed -n 's/^\.\.\. _run_tests_.*_gtest_\([A-Za-z0-9_]*\)$/\1/p' |
     grep -vxF -f <(printf '%s\n' "${ASAN_SKIP[@]}"))
-  [ ${#targets[@]} -gt 0 ] || { asan_failure "$results" build "no gtest targets found"; return 1; }
+  [ ${#targets[@]} -gt 0 ] || { sanitizer_failure asan "$results" build "no gtest targets found"; return 1; }
   cmake --build "$asan/build" --target "${targets[@]}" -- -j"$JOBS" ||
-    { asan_failure "$results" build "the instrumented build failed; see .build/run_tests.log"; return 1; }
+    { sanitizer_failure asan "$results" build "the instrumented build failed; see .build/run_tests.log"; return 1; }
   local t name rc xml
   for name in "${targets[@]}"; do
     t=$(ls "$asan"/devel/lib/*/"$name" 2>/dev/null | head -n1)
-    [ -n "$t" ] || { asan_failure "$results" "$name" "no binary built"; continue; }
+    [ -n "$t" ] || { sanitizer_failure asan "$results" "$name" "no binary built"; continue; }
     xml=$results/asan-$name.xml
     rm -f "$xml"
     rc=0
@@ -190,17 +187,18 @@ run_asan_tests() {
         UBSAN_OPTIONS="print_stacktrace=1 halt_on_error=1" \
         "$t" --gtest_output="xml:$xml") || rc=$?
     if [ "$rc" -ne 0 ] && { [ ! -s "$xml" ] || grep -q 'failures="0"' "$xml"; }; then
-      asan_failure "$results" "$name" "AddressSanitizer/UndefinedBehaviorSanitizer: exit status $rc; see .build/run_tests.log"
+      sanitizer_failure asan "$results" "$name" "AddressSanitizer/UndefinedBehaviorSanitizer: exit status $rc; see .build/run_tests.log"
     fi
   done
 }
 
-# A failing result file: the summary counts it, so a sanitizer run cannot fail silently.
-asan_failure() {
-  cat >"$1/asan-$2.xml" <<XML
+# sanitizer_failure KIND RESULTS NAME MESSAGE: a failing result file KIND-NAME.xml, which the
+# summary counts, so a sanitizer's abort (no results of its own) cannot pass silently.
+sanitizer_failure() {
+  cat >"$2/$1-$3.xml" <<XML
 <?xml version="1.0"?>
-<testsuite name="asan" tests="1" failures="1"><testcase classname="asan" name="$2">
-<failure message="$3"/>
+<testsuite name="$1" tests="1" failures="1"><testcase classname="$1" name="$3">
+<failure message="$4"/>
 </testcase></testsuite>
 XML
 }
