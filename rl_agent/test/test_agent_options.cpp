@@ -244,6 +244,26 @@ TEST(AgentOptions, TaskPlannerOptions) {
             std::string::npos);
 }
 
+TEST(AgentOptions, TaskOutcomesAreTheKeysUnlessJointIsAsked) {
+  EXPECT_EQ(AgentOptions().taskoutcomes, "key");
+  EXPECT_EQ(parse({"--agent", "texplore", "--taskplanner", "vi", "--taskkey", "0,1",
+                   "--taskoutcomes", "joint"})
+                .taskoutcomes,
+            "joint");
+  EXPECT_NE(errorOf({"--agent", "texplore", "--taskplanner", "vi", "--taskkey", "0",
+                     "--taskoutcomes", "all"})
+                .find("joint, key"),
+            std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "texplore", "--taskplanner", "vi", "--taskoutcomes", "key"})
+                .find("needs --taskkey"),
+            std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "texplore", "--taskkey", "0", "--taskoutcomes", "joint"})
+                .find("--taskplanner vi"),
+            std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "qlearner", "--taskoutcomes", "key"}).find("--taskoutcomes"),
+            std::string::npos);
+}
+
 TEST(AgentOptions, SearchThreads) {
   const AgentOptions d;
   EXPECT_EQ(d.searchthreads, 0);  // one per core

@@ -147,6 +147,57 @@ TEST(StateSpacePlanner, KeyFeaturesShareOneEntryQueriedAtItsRepresentative) {
   EXPECT_THROW(bad.plan(State{0, 0}, rl_common::PlanningBudget{}), std::invalid_argument);
 }
 
+namespace {
+
+/// A factored prediction: per feature, its values with their probabilities.
+rl_common::StateActionInfo factored(std::vector<rl_common::FeatureDistribution> features,
+                                    float reward) {
+  rl_common::StateActionInfo info;
+  info.factored = std::move(features);
+  info.reward = reward;
+  info.known = true;
+  return info;
+}
+
+}  // namespace
+
+TEST(StateSpacePlanner, KeyOutcomesReachAnEntryThatEveryFullStateMisses) {
+  // States (door, s1, s2, s3), key = door. In (0,0,0,0) a0 opens the door with p 0.5 and,
+  // guessed separately, each sensor reads 10 with p 0.5; a1 does nothing. The open door pays 1
+  // forever. Over full states every door-open outcome has p 0.5^4 < 0.1: dropped, only the
+  // start is kept, V = 0. Over the key, the open door has p 0.5 (sensors at their first most
+  // likely value, 0): V(open) = 10, V(start) = 0.9 (0.5 V(start) + 5) = 4.5 / 0.55.
+  auto m = std::make_shared<test_mdps::TableModelView>();
+  const rl_common::FeatureDistribution coin0{{0.0f, 0.5}, {1.0f, 0.5}};
+  const rl_common::FeatureDistribution sensor{{0.0f, 0.5}, {10.0f, 0.5}};
+  const rl_common::FeatureDistribution zero{{0.0f, 1.0}}, one{{1.0f, 1.0}};
+  m->table[{State{0, 0, 0, 0}, 0}] = factored({coin0, sensor, sensor, sensor}, 0.0f);
+  m->table[{State{0, 0, 0, 0}, 1}] = factored({zero, zero, zero, zero}, 0.0f);
+  for (int a : {0, 1}) m->table[{State{1, 0, 0, 0}, a}] = factored({one, zero, zero, zero}, 1.0f);
+  auto c = config();
+  c.keyFeatures = {0};
+  c.minTransitionProbability = 0.1;
+  ValueIteration joint(c, 1);
+  joint.setModel(m);
+  joint.plan(State{0, 0, 0, 0}, rl_common::PlanningBudget{});
+  EXPECT_EQ(joint.numStates(), 1u);
+  EXPECT_NEAR(joint.value(State{0, 0, 0, 0}), 0.0, 1e-9);
+  c.keyMarginal = true;
+  ValueIteration keyed(c, 1);
+  keyed.setModel(m);
+  keyed.plan(State{0, 0, 0, 0}, rl_common::PlanningBudget{});
+  EXPECT_EQ(keyed.numStates(), 2u);
+  EXPECT_NEAR(keyed.value(State{1, 5, 5, 5}), 10.0, 1e-5);
+  EXPECT_NEAR(keyed.value(State{0, 0, 0, 0}), 4.5 / 0.55, 1e-5);
+  EXPECT_EQ(keyed.bestAction(State{0, 0, 0, 0}), 0);
+  // Without key features keyMarginal changes nothing: the same table as over full states.
+  c.keyFeatures.clear();
+  ValueIteration all(c, 1);
+  all.setModel(m);
+  all.plan(State{0, 0, 0, 0}, rl_common::PlanningBudget{});
+  EXPECT_EQ(all.numStates(), 1u);
+}
+
 TEST(ValueIteration, WarmStartFromAnotherTableConvergesInFewerSweeps) {
   ValueIteration cold(config(), 1);
   cold.setModel(test_mdps::chainModel());

@@ -125,6 +125,10 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
   p.value("taskkey", &o->taskkey,
           "--taskplanner vi: features (0-based, comma-separated) that tell the planner's states "
           "apart; states equal on them share a value (default: all features)");
+  p.choice("taskoutcomes", &o->taskoutcomes, {"joint", "key"},
+           "--taskplanner vi with --taskkey: the learned model's outcomes planned through; "
+           "key: the --taskkey features' joint values, every other feature at its most likely "
+           "value; joint: full states, a product over all features (before this option)");
   p.value("rollouts", &o->rollouts,
           "UCT rollouts per step, planned synchronously for reproducible runs (0: plan in real "
           "time at --actrate)",
@@ -217,7 +221,7 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
         "tau",         "pathvisits",  "ucb",        "ucbc",       "bonusonce",     "taskucb",
         "taskucbc",    "depth",       "minprob",    "novelty",    "taskplanner",   "taskdepth",
         "taskkey",     "taskminprob", "tasksweeps", "taskrecent", "searchthreads", "defer",
-        "deferregions"}) {
+        "deferregions", "taskoutcomes"}) {
     requireAgent(p, o, option, kModelBased);
   }
   const bool modelBased = isOneOf(o.agent, kModelBased);
@@ -248,10 +252,15 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
           "option --taskplanner vi does not take --history (value "
           "iteration plans on states alone)");
     }
-    for (const char* option : {"taskdepth", "taskkey", "taskminprob", "tasksweeps", "taskrecent"}) {
+    for (const char* option :
+         {"taskdepth", "taskkey", "taskminprob", "tasksweeps", "taskrecent", "taskoutcomes"}) {
       if (p.given(option) && o.taskplanner != "vi") {
         throw rl_common::OptionError(std::string("option --") + option + " needs --taskplanner vi");
       }
+    }
+    if (p.given("taskoutcomes") && o.taskkey.empty()) {
+      throw rl_common::OptionError(
+          "option --taskoutcomes needs --taskkey (over all features the two are the same)");
     }
     if (p.given("epsilon") && o.explore != "epsilongreedy") {
       throw rl_common::OptionError(

@@ -343,6 +343,7 @@ int ModelBasedAgent::planTaskStep(const rl_common::State& s) {
   // step on LightWorld); the most likely outcome alone (0.5) strands the agent.
   c.minTransitionProbability = options_.taskminprob;
   c.keyFeatures = options_.taskkey;
+  c.keyMarginal = options_.taskoutcomes == "key";
   auto planner = std::make_unique<ValueIteration>(
       c, rl_common::Random::deriveSeed(options_.seed, "task planner", taskSteps_++));
   planner->warmStartFrom(taskPlanner_.get());  // last step's values: far fewer sweeps

@@ -42,7 +42,30 @@ StateSpacePlanner::StateSpacePlanner(const Config& config, std::uint64_t seed)
       throw std::invalid_argument("StateSpacePlanner::StateSpacePlanner(): key feature " +
                                   std::to_string(f) + " out of range");
     }
+    if (static_cast<std::size_t>(f) >= isKey_.size()) isKey_.resize(static_cast<std::size_t>(f) + 1, 0);
+    isKey_[static_cast<std::size_t>(f)] = 1;
   }
+}
+
+std::vector<std::pair<rl_common::State, double>> StateSpacePlanner::outcomes(
+    const rl_common::StateActionInfo& info) const {
+  if (!config_.keyMarginal || isKey_.empty() || info.factored.empty()) {
+    return rl_common::expandTransitions(info, config_.minTransitionProbability);
+  }
+  // Marginalise the non-key features out: each keeps only its most likely value (first of
+  // equals, so deterministic), with probability 1.
+  rl_common::StateActionInfo keyed;
+  keyed.factored = info.factored;
+  for (std::size_t j = 0; j < keyed.factored.size(); ++j) {
+    auto& dist = keyed.factored[j];
+    if ((j < isKey_.size() && isKey_[j]) || dist.size() <= 1) continue;
+    auto best = dist.front();
+    for (const auto& vq : dist) {
+      if (vq.second > best.second) best = vq;
+    }
+    dist.assign(1, {best.first, 1.0});
+  }
+  return rl_common::expandTransitions(keyed, config_.minTransitionProbability);
 }
 
 rl_common::State StateSpacePlanner::binned(const rl_common::State& s) const {
@@ -144,8 +167,7 @@ std::vector<int> StateSpacePlanner::refresh() {
         reward[a] = info.reward;
         cont[a] = 1.0 - std::clamp(static_cast<double>(info.termProb), 0.0, 1.0);
         double stay = 0.0;  // mass of successors outside the feature ranges
-        for (const auto& [s2, p] :
-             rl_common::expandTransitions(info, config_.minTransitionProbability)) {
+        for (const auto& [s2, p] : outcomes(info)) {
           if (p <= 0.0) continue;
           if (!inRange(s2)) {
             stay += p;

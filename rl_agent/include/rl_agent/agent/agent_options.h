@@ -79,6 +79,11 @@ struct AgentOptions {
   int taskrecent = 50;
   /// --taskplanner vi: the features that tell the planner's states apart (empty: all).
   std::vector<int> taskkey;
+  /// --taskplanner vi with --taskkey: the learned model's outcomes planned through are "key"
+  /// (the key features' joint values, the others at their most likely values;
+  /// StateSpacePlanner::Config::keyMarginal) or "joint" (full states, each a product over all
+  /// features: the runs before this option). Without --taskkey every feature is a key.
+  std::string taskoutcomes = "key";
 };
 
 /// True if --nstates bins some feature.

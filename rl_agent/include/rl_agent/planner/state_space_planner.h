@@ -62,6 +62,12 @@ class StateSpacePlanner : public rl_common::Planner {
     /// learned factored model whose per-feature guesses never close up (e.g. LightWorld's
     /// light sensors) otherwise reaches a new state at almost every imagined step.
     std::vector<int> keyFeatures;
+    /// With keyFeatures: a factored prediction's outcomes are the joint values of the key
+    /// features only, every other feature at its most likely value. An entry is then reached
+    /// with the probability the model gives its key, not that of one full state: a door that
+    /// opens (one key feature) and turns four door sensors on (four non-key features, each a
+    /// separate guess) is otherwise a product below minTransitionProbability, and dropped.
+    bool keyMarginal = false;
   };
 
   /// Throws std::invalid_argument for a bad configuration.
@@ -132,6 +138,9 @@ class StateSpacePlanner : public rl_common::Planner {
   /// The table key of a (binned) state: its keyFeatures, or all of it.
   rl_common::State keyOf(const rl_common::State& binnedState) const;
   std::vector<int> refresh();
+  /// The outcomes planned for one prediction (keyMarginal: over the key features only).
+  std::vector<std::pair<rl_common::State, double>> outcomes(
+      const rl_common::StateActionInfo& info) const;
 
   rl_common::Random rng_;
   std::shared_ptr<const rl_common::ModelView> model_;
@@ -144,6 +153,7 @@ class StateSpacePlanner : public rl_common::Planner {
   bool solved_ = false;  // solved without a budget limit and nothing changed since
   StateGrid grid_;
   const StateSpacePlanner* warm_ = nullptr;
+  std::vector<char> isKey_;  // per feature, for keyMarginal (empty: no key features)
 };
 
 }  // namespace rl_agent
