@@ -124,9 +124,11 @@ run_tsan_tests() {
       -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DCATKIN_WHITELIST_PACKAGES="$packages" -DCATKIN_ENABLE_TESTING=ON \
       -DCMAKE_CXX_FLAGS="-fsanitize=thread" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=thread" \
-      -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=thread" >"$tsan/configure.log" 2>&1 || return 1
+      -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=thread" >"$tsan/configure.log" 2>&1 ||
+      { sanitizer_failure tsan "$results" build "configure failed; see .build/tsan/configure.log"; return 1; }
   fi
-  cmake --build "$tsan/build" --target "${TSAN_TESTS[@]}" -- -j"$JOBS" || return 1
+  cmake --build "$tsan/build" --target "${TSAN_TESTS[@]}" -- -j"$JOBS" ||
+    { sanitizer_failure tsan "$results" build "the instrumented build failed; see .build/run_tests.log"; return 1; }
   local t rc xml
   for t in "${TSAN_TESTS[@]}"; do
     xml=$results/tsan-$t.xml

@@ -183,6 +183,25 @@ TEST(ModelBasedAgent, TaskKeyFeaturesMustExist) {
   EXPECT_THROW(ModelBasedAgent(o, corridorTask()), std::invalid_argument);
 }
 
+TEST(ModelBasedAgent, DeferRegionsNeedADeferral) {
+  // Without a deferral --deferregions would change nothing: an error, not a silent no-op.
+  EXPECT_THROW(ModelBasedAgent(texplore({"--rollouts", "5", "--explore", "random",
+                                         "--deferregions", "2"}),
+                               corridorTask()),
+               std::invalid_argument);
+  EXPECT_THROW(ModelBasedAgent(texplore({"--rollouts", "5", "--explore", "variancenovelty", "--v",
+                                         "1", "--n", "3", "--defer", "0", "--deferregions", "2"}),
+                               corridorTask()),
+               std::invalid_argument);
+  // VANIR's own deferral, or one given to another explorer, takes it.
+  EXPECT_NO_THROW(ModelBasedAgent(texplore({"--rollouts", "5", "--explore", "variancenovelty",
+                                            "--v", "1", "--n", "3", "--deferregions", "2"}),
+                                  corridorTask()));
+  EXPECT_NO_THROW(ModelBasedAgent(
+      texplore({"--rollouts", "5", "--explore", "random", "--defer", "50", "--deferregions", "2"}),
+      corridorTask()));
+}
+
 TEST(ModelBasedAgent, TaskPlannerViInRealTimeKeepsTheActionRate) {
   // In real time the task phase plans in the agent's thread on the model thread's latest view
   // and still waits for each action's due time.

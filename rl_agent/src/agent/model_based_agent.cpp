@@ -203,6 +203,11 @@ ModelBasedAgent::ModelBasedAgent(const AgentOptions& options,
   const long defer = options.defer >= 0 ? options.defer : explorer->deferSteps;
   if (defer > 0 && options.history == 0) {
     deferral_ = std::make_unique<StepDeferral>(defer, options.deferregions);
+  } else if (options.deferregions > 0) {
+    throw std::invalid_argument(
+        "ModelBasedAgent::ModelBasedAgent(): --deferregions needs a deferral: --defer above 0 "
+        "(its default defers only for --explore variancenovelty with --v or --n above 0) and "
+        "no --history");
   }
 
   if (binsStates(options) && options.model != "m5tree") {
