@@ -36,6 +36,13 @@ int main(int argc, char** argv) {
       return 0;
     }
     rl_experiment::finishExperimentConfig(parser, &config);
+    if (check) {
+      // Some rules need the task (e.g. --taskkey's range, whether the explorer defers): build
+      // the environment and the agent once, as a trial does.
+      const auto env = rl_env::makeEnvironment(config.env);
+      rl_agent::makeAgent(config.agent, env->describe(),
+                          dynamic_cast<const rl_common::TrueModel*>(env.get()));
+    }
   } catch (const rl_common::OptionError& e) {
     std::cerr << "experiment: " << e.what() << "\n(see experiment --help)\n";
     return 2;

@@ -157,6 +157,19 @@ TEST(Experiment, BadOptionsSayWhatIsValid) {
   EXPECT_NE(t2.find("nosuchoption"), std::string::npos) << t2;
 }
 
+TEST(Experiment, CheckBuildsTheAgentForTheTask) {
+  // Rules that need the task or the explorer fail --check too, not only the first trial.
+  const std::string check = std::string(EXPERIMENT_BIN) + " --env lightworld --agent texplore ";
+  const auto [bad, badText] =
+      shell(check + "--rollouts 5 --taskplanner vi --taskkey 0,17 --check");
+  EXPECT_EQ(bad, 2);
+  EXPECT_NE(badText.find("--taskkey feature 17 out of range"), std::string::npos) << badText;
+  const auto [idle, idleText] = shell(check + "--rollouts 5 --explore random --deferregions 2 --check");
+  EXPECT_EQ(idle, 2);
+  EXPECT_NE(idleText.find("--deferregions needs a deferral"), std::string::npos) << idleText;
+  EXPECT_EQ(shell(check + "--rollouts 5 --v 1 --n 3 --deferregions 2 --check").first, 0);
+}
+
 TEST(Experiment, OriginalFormatPrintsBareNumbersOnStderr) {
   const auto [status, text] = shell(std::string(EXPERIMENT_BIN) +
                                         " --agent qlearner --env lightworld --steps 40 --format "
