@@ -5,6 +5,7 @@ asserts that the run folder holds the expected logs and that actions and rewards
 (rl_agent/rl_action, rl_agent/rl_reward_breakdown). Parameters: ~out, ~steps, ~trials,
 ~num_actions (the environment's), ~seed (the run seed), ~timeout (seconds)."""
 import csv
+import struct
 import os
 import unittest
 
@@ -60,6 +61,18 @@ class Experiment(unittest.TestCase):
         self.assertGreater(len(self.actions), 0)
         self.assertGreater(len(self.breakdowns), 0)
         self.assertTrue(all(0 <= a < num_actions for a in self.actions))
+        # The launch file's agent journal: a header, then the original's record layout with
+        # one record per step the agent learned from (a trial's first state teaches nothing).
+        journal = rospy.get_param("~journal", "")
+        if journal:
+            with open(journal, "rb") as f:
+                data = f.read()
+            self.assertTrue(data.startswith(b"RL_EXPERIENCE_JOURNAL 1\n"), data[:40])
+            body = data[data.index(b"\nend\n") + 5:]
+            nfeats = struct.unpack("=i", body[:4])[0]
+            record = 2 * nfeats * 4 + 4 + 4 + 1
+            self.assertEqual((len(body) - 4) % record, 0, "a partial record")
+            self.assertGreaterEqual((len(body) - 4) // record, trials * (steps - 1))
 
 
 if __name__ == "__main__":

@@ -6,11 +6,17 @@
 // must be those of the env node, which the node checks against the received description.
 #include <ros/ros.h>
 
+#include <unistd.h>
+
 #include <csignal>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
 #include "rl_agent/agent/agent_registry.h"
+#include "rl_agent/journal/experience_journal.h"
 #include "rl_agent/ros/agent_node.h"
 #include "rl_common/ros/param_loader.h"
 #include "rl_common/stop_request.h"
@@ -72,6 +78,26 @@ void onSigint(int) {
   ros::requestShutdown();
 }
 
+/// ROS_HOME/rl_agent/journals/journal-<local time>-<pid>.rlj (ROS_HOME: ~/.ros if unset),
+/// its folder created.
+std::string autoJournalPath() {
+  const char* rosHome = std::getenv("ROS_HOME");
+  const char* home = std::getenv("HOME");
+  if ((rosHome == nullptr || *rosHome == '\0') && home == nullptr) {
+    throw std::runtime_error("neither ROS_HOME nor HOME is set");
+  }
+  const std::filesystem::path dir =
+      std::filesystem::path(rosHome != nullptr && *rosHome != '\0' ? rosHome
+                                                                     : std::string(home) + "/.ros") /
+      "rl_agent" / "journals";
+  std::filesystem::create_directories(dir);
+  const std::time_t now = std::time(nullptr);
+  char stamp[32];
+  std::strftime(stamp, sizeof(stamp), "%Y%m%d-%H%M%S", std::localtime(&now));
+  return (dir / ("journal-" + std::string(stamp) + "-" + std::to_string(::getpid()) + ".rlj"))
+      .string();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -88,6 +114,15 @@ int main(int argc, char** argv) {
                "model to plan on (lightworld, taxi, tworooms, fourrooms); give the env node's "
                "options too");
   rl_env::addEnvironmentVariantOptions(parser, &envOptions);
+  rl_agent::JournalSettings journal;
+  parser.value("journal", &journal.journal,
+               "append every experience the agent learns from to this file, flushed per record "
+               "(the original's experience-file layout behind a header; an existing journal of "
+               "the same task is appended to); auto: a new file under "
+               "ROS_HOME/rl_agent/journals (empty: none)");
+  parser.value("resume-journal", &journal.resume,
+               "before acting, rebuild the agent's model from the experiences of this journal "
+               "(e.g. the --journal of a killed node; a record cut by the kill is dropped)");
   std::unique_ptr<rl_common::Environment> trueModelEnv;
   std::unique_ptr<ros::NodeHandle> pnh;
   try {
@@ -107,6 +142,9 @@ int main(int argc, char** argv) {
     rl_agent::applyAgentDefaults(parser, &options);
     rl_agent::checkAgentOptions(parser, options);
     trueModelEnv = trueModelEnvironment(parser, options, envOptions);
+    if (!journal.resume.empty()) {
+      rl_agent::readExperienceJournal(journal.resume);  // a missing or foreign file: exit 2 now
+    }
   } catch (const std::exception& e) {
     std::cerr << "agent: " << e.what() << "\n";
     return 2;
@@ -114,7 +152,21 @@ int main(int argc, char** argv) {
   std::string config;
   for (const auto& [name, value] : parser.currentValues()) config += " " + name + "=" + value;
   ROS_INFO_STREAM_NAMED("agent", "configuration:" << config);
-  rl_agent::AgentNode node(ros::NodeHandle(), options, std::move(trueModelEnv));
+  journal.header = {{"written_by", "rl_agent agent node"},
+                    {"version", RL_AGENT_VERSION},
+                    {"agent", options.agent},
+                    {"seed", std::to_string(options.seed)},
+                    {"config", config.empty() ? config : config.substr(1)}};
+  if (journal.journal == "auto") {
+    try {
+      journal.journal = autoJournalPath();
+    } catch (const std::exception& e) {
+      std::cerr << "agent: --journal auto: " << e.what() << "\n";
+      return 2;
+    }
+  }
+  rl_agent::AgentNode node(ros::NodeHandle(), options, std::move(trueModelEnv),
+                           std::move(journal));
   ros::spin();
   return node.failed() ? 1 : 0;
 }

@@ -10,6 +10,7 @@
 #include "rl_agent/agent/agent_registry.h"
 #include "rl_agent/agent/optimal_agent.h"
 #include "rl_agent/agent/reward_breakdown_source.h"
+#include "rl_agent/journal/journaling_agent.h"
 
 namespace rl_agent {
 
@@ -89,8 +90,12 @@ rl_common::EnvironmentDescription fromMessage(const rl_msgs::RLEnvDescription& m
 }
 
 AgentNode::AgentNode(ros::NodeHandle nh, const AgentOptions& options,
-                     std::unique_ptr<rl_common::Environment> trueModelEnv)
-    : nh_(nh), options_(options), trueModelEnv_(std::move(trueModelEnv)) {
+                     std::unique_ptr<rl_common::Environment> trueModelEnv,
+                     JournalSettings journal)
+    : nh_(nh),
+      options_(options),
+      trueModelEnv_(std::move(trueModelEnv)),
+      journalSettings_(std::move(journal)) {
   if (trueModelEnv_) {
     trueModel_ = dynamic_cast<const rl_common::TrueModel*>(trueModelEnv_.get());
     if (trueModel_ == nullptr) {
@@ -133,7 +138,43 @@ AgentNode::~AgentNode() {
 }
 
 void AgentNode::buildAgent() {
-  agent_ = makeAgent(options_, *description_, trueModel_);
+  agent_.reset();
+  core_ = nullptr;
+  auto agent = makeAgent(options_, *description_, trueModel_);
+  const int features = static_cast<int>(description_->numFeatures());
+  if (!journalSettings_.resume.empty()) {
+    if (!resume_) {  // read once: a rebuild starts from what the node knew when it started
+      resume_ = readExperienceJournal(journalSettings_.resume);
+      if (resume_->droppedBytes > 0) {
+        ROS_WARN_STREAM_NAMED("agent", "journal '" << journalSettings_.resume << "' ended in a "
+                                                   << resume_->droppedBytes
+                                                   << "-byte partial record (a write cut by a "
+                                                      "kill): loaded up to the last whole one");
+      }
+    }
+    if (resume_->numFeatures != features) {
+      throw std::runtime_error("journal '" + journalSettings_.resume + "' holds " +
+                               std::to_string(resume_->numFeatures) + "-feature experiences; " +
+                               "the environment has " + std::to_string(features));
+    }
+    agent->seedExperiences(resume_->records);
+    ROS_INFO_STREAM_NAMED("agent", "rebuilt the model from the " << resume_->records.size()
+                                       << " experiences of journal '" << journalSettings_.resume
+                                       << "'");
+  }
+  core_ = agent.get();
+  if (!journalSettings_.journal.empty()) {
+    if (!journal_ || journal_->numFeatures() != features) {
+      journal_.reset();
+      journal_ = std::make_shared<ExperienceJournalWriter>(journalSettings_.journal, features,
+                                                           journalSettings_.header);
+      ROS_INFO_STREAM_NAMED("agent", "journaling every experience to '"
+                                         << journalSettings_.journal << "' ("
+                                         << journal_->records() << " records in it)");
+    }
+    agent = std::make_unique<JournalingAgent>(std::move(agent), journal_);
+  }
+  agent_ = std::move(agent);
   firstAction_ = true;
   episode_ = 0;
   steps_ = 0;
@@ -163,6 +204,7 @@ void AgentNode::onDescription(const rl_msgs::RLEnvDescription::ConstPtr& msg) {
                        << trueModelEnv_->name()
                        << "; give the env node's --env and options): " << mismatch);
       agent_.reset();
+      core_ = nullptr;
       description_.reset();
       failed_ = true;
       ros::shutdown();
@@ -174,6 +216,7 @@ void AgentNode::onDescription(const rl_msgs::RLEnvDescription::ConstPtr& msg) {
   } catch (const std::exception& e) {
     ROS_ERROR_STREAM_NAMED("agent", "cannot build agent '" << options_.agent << "': " << e.what());
     agent_.reset();
+    core_ = nullptr;
     return;
   }
   ROS_INFO_STREAM_NAMED("agent", "built agent '"
@@ -280,7 +323,7 @@ void AgentNode::act(const rl_msgs::RLStateReward& state) {
   b.step = static_cast<int>(steps_++);
   b.action = action;
   b.external = state.reward;
-  if (const auto* src = dynamic_cast<const RewardBreakdownSource*>(agent_.get())) {
+  if (const auto* src = dynamic_cast<const RewardBreakdownSource*>(core_)) {
     const RewardBreakdown parts = src->lastRewardBreakdown();
     b.variance = parts.variance;
     b.novelty = parts.novelty;

@@ -19,6 +19,12 @@
  * arrive before the first description (the latched state of an env node that is already
  * running can) are kept and replayed once the agent is built. Malformed messages
  * (wrong lengths, NaN or infinite values) are logged and dropped; the node keeps running.
+ *
+ * Experience journal (journal/experience_journal.h): with `journal` set, every experience the
+ * agent learns from is appended to that file and flushed; with `resume` set, every agent the
+ * node builds (at a description, or by the reset service between trials) learns that
+ * journal's experiences, as read at the first build, before it acts. Both may be one file: a
+ * resumed node goes on writing the journal it was rebuilt from.
  */
 #pragma once
 
@@ -35,6 +41,7 @@
 #include <vector>
 
 #include "rl_agent/agent/agent_options.h"
+#include "rl_agent/journal/experience_journal.h"
 #include "rl_common/agent.h"
 #include "rl_common/environment.h"
 #include "rl_common/true_model.h"
@@ -52,13 +59,21 @@ constexpr int kMaxDescribedFeatures = 65536;
 /// min above max, a span or value that is not finite, a negative reward_range).
 rl_common::EnvironmentDescription fromMessage(const rl_msgs::RLEnvDescription& m);
 
+/// The agent node's journal files (empty: none) and the header a new journal gets.
+struct JournalSettings {
+  std::string journal;
+  std::string resume;
+  JournalHeader header;
+};
+
 class AgentNode {
  public:
   /// `trueModelEnv`: for `optimal`, the node's own copy of the env node's environment (it
   /// must implement rl_common::TrueModel); null for every other agent. Throws
   /// std::invalid_argument if it is given but has no true model.
   AgentNode(ros::NodeHandle nh, const AgentOptions& options,
-            std::unique_ptr<rl_common::Environment> trueModelEnv = nullptr);
+            std::unique_ptr<rl_common::Environment> trueModelEnv = nullptr,
+            JournalSettings journal = {});
   ~AgentNode();
 
   /// True after a fatal error (a description that does not match the true model); the node
@@ -83,7 +98,11 @@ class AgentNode {
   const rl_common::TrueModel* trueModel_ = nullptr;  ///< trueModelEnv_ as a TrueModel
   bool failed_ = false;
   std::optional<rl_common::EnvironmentDescription> description_;
-  std::unique_ptr<rl_common::Agent> agent_;
+  std::unique_ptr<rl_common::Agent> agent_;  ///< the agent, journaling if asked
+  rl_common::Agent* core_ = nullptr;         ///< the agent itself (agent_ or the one it wraps)
+  JournalSettings journalSettings_;
+  std::shared_ptr<ExperienceJournalWriter> journal_;
+  std::optional<JournalContents> resume_;  ///< the resume journal, read at the first build
   bool firstAction_ = true;
   int episode_ = 0;
   int actions_ = 0;
