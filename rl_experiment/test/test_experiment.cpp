@@ -14,10 +14,12 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <set>
 #include <sstream>
 #include <thread>
 
+#include "rl_agent/journal/experience_journal.h"
 #include "rl_experiment/log/csv_file.h"
 
 namespace {
@@ -155,6 +157,40 @@ TEST(Experiment, BadOptionsSayWhatIsValid) {
   const auto [s2, t2] = shell(std::string(EXPERIMENT_BIN) + " --nosuchoption 3");
   EXPECT_EQ(s2, 2);
   EXPECT_NE(t2.find("nosuchoption"), std::string::npos) << t2;
+}
+
+TEST(Experiment, JournalKeepsEveryTrialsExperiences) {
+  char dir[] = "/tmp/rl_runner_journal_XXXXXX";
+  ASSERT_NE(::mkdtemp(dir), nullptr);
+  const std::string out = std::string(dir) + "/run";
+  const std::string run = std::string(EXPERIMENT_BIN) +
+                          " --agent texplore --v 1 --n 3 --rollouts 5 --env lightworld "
+                          "--steps 60 --trials 2 --eval-every 0 --progress off --journal --out " +
+                          out;
+  ASSERT_EQ(shell(run + " > /dev/null").first, 0);
+  const auto seeds = rl_experiment::parseCsv(rl_experiment::readFile(out + "/seeds.csv"));
+  ASSERT_EQ(seeds.size(), 3u);
+  for (int trial = 0; trial < 2; ++trial) {
+    const auto j = rl_agent::readExperienceJournal(out + "/journal-00" + std::to_string(trial) +
+                                                   ".rlj");
+    EXPECT_EQ(j.numFeatures, 17);
+    // 60 steps: the agent learns from the 59 that a next state followed.
+    ASSERT_EQ(j.records.size(), 59u);
+    for (std::size_t i = 0; i + 1 < j.records.size(); ++i) {
+      ASSERT_EQ(j.records[i].next, j.records[i + 1].s) << "trial " << trial << " record " << i;
+    }
+    std::map<std::string, std::string> header(j.header.begin(), j.header.end());
+    EXPECT_EQ(header["trial"], std::to_string(trial));
+    EXPECT_EQ(header["seed"], seeds[static_cast<std::size_t>(trial) + 1][1]);
+    EXPECT_EQ(header["agent"], "texplore");
+  }
+  // --force replaces the journals with the new run's, not appends to them.
+  ASSERT_EQ(shell(run + " --force > /dev/null").first, 0);
+  EXPECT_EQ(rl_agent::readExperienceJournal(out + "/journal-000.rlj").records.size(), 59u);
+  const auto [status, text] = shell(std::string(EXPERIMENT_BIN) + " --journal --steps 5");
+  EXPECT_EQ(status, 2);
+  EXPECT_NE(text.find("--journal need --out"), std::string::npos) << text;
+  std::system(("rm -rf " + std::string(dir)).c_str());
 }
 
 TEST(Experiment, CheckBuildsTheAgentForTheTask) {

@@ -4,18 +4,33 @@
 #include <string>
 
 #include "rl_agent/agent/model_based_agent.h"
+#include "rl_agent/journal/journaling_agent.h"
 
 namespace rl_experiment {
 
+namespace {
+
+// The agent itself, under a journal (--journal) if there is one.
+const rl_common::Agent& core(const rl_common::Agent& agent) {
+  if (const auto* j = dynamic_cast<const rl_agent::JournalingAgent*>(&agent)) return j->inner();
+  return agent;
+}
+rl_common::Agent& core(rl_common::Agent& agent) {
+  if (auto* j = dynamic_cast<rl_agent::JournalingAgent*>(&agent)) return j->inner();
+  return agent;
+}
+
+}  // namespace
+
 std::optional<rl_agent::RewardBreakdown> rewardBreakdownOf(const rl_common::Agent& agent) {
-  if (const auto* source = dynamic_cast<const rl_agent::RewardBreakdownSource*>(&agent)) {
+  if (const auto* source = dynamic_cast<const rl_agent::RewardBreakdownSource*>(&core(agent))) {
     return source->lastRewardBreakdown();
   }
   return std::nullopt;
 }
 
 bool setIntrinsicEnabled(rl_common::Agent& agent, bool enabled) {
-  if (auto* mb = dynamic_cast<rl_agent::ModelBasedAgent*>(&agent)) {
+  if (auto* mb = dynamic_cast<rl_agent::ModelBasedAgent*>(&core(agent))) {
     mb->setIntrinsicEnabled(enabled);
     return true;
   }
@@ -23,7 +38,7 @@ bool setIntrinsicEnabled(rl_common::Agent& agent, bool enabled) {
 }
 
 bool recordExperiences(rl_common::Agent& agent) {
-  if (auto* mb = dynamic_cast<rl_agent::ModelBasedAgent*>(&agent)) {
+  if (auto* mb = dynamic_cast<rl_agent::ModelBasedAgent*>(&core(agent))) {
     mb->recordExperiences(true);
     return true;
   }
@@ -31,7 +46,7 @@ bool recordExperiences(rl_common::Agent& agent) {
 }
 
 long giveTaskRewards(rl_common::Agent& agent, const std::vector<float>& stepRewards) {
-  auto* mb = dynamic_cast<rl_agent::ModelBasedAgent*>(&agent);
+  auto* mb = dynamic_cast<rl_agent::ModelBasedAgent*>(&core(agent));
   if (mb == nullptr) return -1;
   const std::size_t n = mb->recordedSteps();
   if (n > stepRewards.size()) {
@@ -44,7 +59,7 @@ long giveTaskRewards(rl_common::Agent& agent, const std::vector<float>& stepRewa
 }
 
 std::shared_ptr<const rl_common::ModelView> learnedModelOf(const rl_common::Agent& agent) {
-  if (const auto* mb = dynamic_cast<const rl_agent::ModelBasedAgent*>(&agent)) {
+  if (const auto* mb = dynamic_cast<const rl_agent::ModelBasedAgent*>(&core(agent))) {
     const auto view = mb->modelView();
     if (view == nullptr) return nullptr;
     // The inner factored model: predictions without the intrinsic bonuses (the transitions are

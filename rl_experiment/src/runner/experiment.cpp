@@ -21,6 +21,7 @@
 #include <thread>
 
 #include "rl_agent/agent/agent_registry.h"
+#include "rl_agent/journal/journaling_agent.h"
 #include "rl_common/random.h"
 #include "rl_env/env/environment_registry.h"
 #include "rl_experiment/log/csv_file.h"
@@ -77,6 +78,9 @@ void addExperimentOptions(rl_common::OptionParser& p, ExperimentConfig* c) {
           }));
   p.value("out", &c->out, "folder for the logs (none: no files)");
   p.flag("force", &c->force, true, "overwrite the results in --out");
+  p.flag("journal", &c->journal, true,
+         "every trial's agent appends the experiences it learns from to journal-NNN.rlj in "
+         "--out, flushed per record (the agent node's --journal layout)");
   p.flag("resume", &c->resume, true, "finish the unfinished trials in --out");
   p.value("jobs", &c->jobs, "trials run in parallel processes", greaterThan(0));
   p.choice("format", &c->format, {"csv", "original"},
@@ -109,8 +113,8 @@ void finishExperimentConfig(const rl_common::OptionParser& p, ExperimentConfig* 
   if (c->force && c->resume) {
     throw rl_common::OptionError("options --force and --resume exclude each other");
   }
-  if ((c->force || c->resume) && c->out.empty()) {
-    throw rl_common::OptionError("options --force and --resume need --out");
+  if ((c->force || c->resume || c->journal) && c->out.empty()) {
+    throw rl_common::OptionError("options --force, --resume and --journal need --out");
   }
   if (c->format == "original" && c->jobs > 1) {
     throw rl_common::OptionError(
@@ -210,7 +214,8 @@ bool isRunnerFile(const std::string& name) {
       return true;
     }
   }
-  return false;
+  return name.rfind("journal-", 0) == 0 && name.size() > 4 &&
+         name.compare(name.size() - 4, 4, ".rlj") == 0;
 }
 
 std::vector<std::string> listFiles(const std::string& folder) {
@@ -375,6 +380,21 @@ std::vector<std::pair<std::string, std::string>> Experiment::runTrial(
   // `optimal` plans on the environment's exact dynamics (the other agents ignore them).
   auto agent = rl_agent::makeAgent(ao, env->describe(),
                                    dynamic_cast<const rl_common::TrueModel*>(env.get()));
+  if (config_.journal) {
+    // A trial always runs from its start (--resume reruns unfinished ones): a new journal.
+    char name[32];
+    std::snprintf(name, sizeof(name), "journal-%03d.rlj", trial);
+    std::remove(path(name).c_str());
+    auto journal = std::make_shared<rl_agent::ExperienceJournalWriter>(
+        path(name), static_cast<int>(env->describe().numFeatures()),
+        rl_agent::JournalHeader{{"written_by", "rl_experiment experiment"},
+                                {"version", suiteVersion()},
+                                {"agent", ao.agent},
+                                {"seed", std::to_string(ao.seed)},
+                                {"trial", std::to_string(trial)},
+                                {"command_line", commandLine_}});
+    agent = std::make_unique<rl_agent::JournalingAgent>(std::move(agent), std::move(journal));
+  }
 
   TrialLimits limits;
   limits.steps = config_.steps > 0 ? config_.steps : config_.nepisodes;

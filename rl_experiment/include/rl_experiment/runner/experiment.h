@@ -52,6 +52,7 @@ struct ExperimentConfig {
   std::string out;                    ///< --out folder ("" : no files)
   bool force = false;                 ///< --force
   bool resume = false;                ///< --resume
+  bool journal = false;               ///< --journal: journal-NNN.rlj per trial in --out
   int jobs = 1;                       ///< --jobs
   std::string format = "csv";         ///< --format csv|original
   std::string label;                  ///< --label (default: the agent's name)
