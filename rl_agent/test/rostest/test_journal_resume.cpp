@@ -12,28 +12,10 @@
 #include <thread>
 #include <vector>
 
+#include "child_process.h"
 #include "rl_agent/journal/experience_journal.h"
 
 namespace {
-
-/// Starts the agent node (AGENT_BIN) with `args` under `name`; its log goes to `log`.
-pid_t startAgent(const std::string& name, const std::vector<std::string>& args,
-                 const std::string& log) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    std::vector<std::string> all{AGENT_BIN, "__name:=" + name};
-    all.insert(all.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (auto& a : all) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    const std::string redirect = log;
-    if (std::freopen(redirect.c_str(), "w", stdout) == nullptr) ::_exit(126);
-    ::dup2(::fileno(stdout), 2);
-    ::execv(AGENT_BIN, argv.data());
-    ::_exit(127);
-  }
-  return pid;
-}
 
 /// Records in the journal now (0 while it does not exist yet).
 std::size_t records(const std::string& path) {
@@ -53,15 +35,11 @@ bool waitFor(const std::function<bool()>& done, double seconds) {
   return done();
 }
 
-std::string fileText(const std::string& path) {
-  std::FILE* f = std::fopen(path.c_str(), "r");
-  std::string text;
-  if (f == nullptr) return text;
-  char buf[4096];
-  std::size_t n;
-  while ((n = std::fread(buf, 1, sizeof(buf), f)) > 0) text.append(buf, n);
-  std::fclose(f);
-  return text;
+/// The agent node (AGENT_BIN) with `args`, named agent.
+pid_t startAgent(const std::vector<std::string>& args, const std::string& log) {
+  std::vector<std::string> all{AGENT_BIN, "__name:=agent"};
+  all.insert(all.end(), args.begin(), args.end());
+  return test_nodes::start(all, log);
 }
 
 }  // namespace
@@ -72,11 +50,11 @@ TEST(AgentNode, ResumesFromItsJournalAfterAKill) {
   const std::string journal = dir + "/agent.journal";
   const std::vector<std::string> agent{"--agent", "texplore", "--v", "1", "--n", "3",
                                        "--rollouts", "20", "--seed", "5", "--journal", journal};
-  const pid_t first = startAgent("agent", agent, dir + "/first.log");
+  const pid_t first = startAgent(agent, dir + "/first.log");
   ASSERT_GT(first, 0);
   ASSERT_TRUE(waitFor([&] { return records(journal) >= 150; }, 60.0))
       << "the agent journaled " << records(journal) << " experiences in 60 s\n"
-      << fileText(dir + "/first.log");
+      << test_nodes::fileText(dir + "/first.log");
   ASSERT_EQ(::kill(first, SIGKILL), 0);
   int status = 0;
   ASSERT_EQ(::waitpid(first, &status, 0), first);
@@ -98,12 +76,12 @@ TEST(AgentNode, ResumesFromItsJournalAfterAKill) {
 
   std::vector<std::string> resume = agent;
   resume.insert(resume.end(), {"--resume-journal", journal});
-  const pid_t second = startAgent("agent", resume, dir + "/second.log");
+  const pid_t second = startAgent(resume, dir + "/second.log");
   ASSERT_GT(second, 0);
   const bool stepping = waitFor([&] { return records(journal) >= k + 100; }, 60.0);
   ::kill(second, SIGINT);
   ::waitpid(second, &status, 0);
-  const std::string log = fileText(dir + "/second.log");
+  const std::string log = test_nodes::fileText(dir + "/second.log");
   ASSERT_TRUE(stepping) << "after the restart the journal grew to " << records(journal) << "\n"
                         << log;
   EXPECT_NE(log.find("rebuilt the model from the " + std::to_string(k) + " experiences"),
