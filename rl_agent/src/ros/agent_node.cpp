@@ -5,12 +5,23 @@
 #include <rl_msgs/RLRewardBreakdown.h>
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "rl_agent/agent/agent_registry.h"
 #include "rl_agent/agent/optimal_agent.h"
 #include "rl_agent/agent/reward_breakdown_source.h"
 #include "rl_agent/journal/journaling_agent.h"
+
+// A "dropping ..." warning through the node's rate limit (rl_common::RateLimitedLog).
+#define RL_AGENT_DROP(stream)                                   \
+  do {                                                          \
+    std::ostringstream dropLine_;                               \
+    dropLine_ << stream;                                        \
+    if (auto l_ = dropLog_.admit(dropLine_.str())) {            \
+      ROS_WARN_STREAM_NAMED("agent", *l_);                      \
+    }                                                           \
+  } while (0)
 
 namespace rl_agent {
 
@@ -184,7 +195,7 @@ void AgentNode::onDescription(const rl_msgs::RLEnvDescription::ConstPtr& msg) {
   try {
     description_ = fromMessage(*msg);
   } catch (const std::invalid_argument& e) {
-    ROS_ERROR_STREAM_NAMED("agent", "dropping a malformed environment description: " << e.what());
+    RL_AGENT_DROP("dropping a malformed environment description: " << e.what());
     return;
   }
   for (std::size_t j = 0; j < description_->numFeatures(); ++j) {
@@ -235,13 +246,13 @@ void AgentNode::onDescription(const rl_msgs::RLEnvDescription::ConstPtr& msg) {
 
 bool AgentNode::validState(const std::vector<float>& s, const char* what) const {
   if (s.size() != description_->numFeatures()) {
-    ROS_WARN_STREAM_NAMED("agent", "dropping a " << what << " with " << s.size()
+    RL_AGENT_DROP("dropping a " << what << " with " << s.size()
                                                  << " features; the environment has "
                                                  << description_->numFeatures());
     return false;
   }
   if (!allFinite(s)) {
-    ROS_WARN_STREAM_NAMED("agent", "dropping a " << what << " with NaN or infinite values");
+    RL_AGENT_DROP("dropping a " << what << " with NaN or infinite values");
     return false;
   }
   return true;
@@ -257,13 +268,18 @@ void AgentNode::onSeed(const rl_msgs::RLEnvSeedExperience::ConstPtr& msg) {
     return;
   }
   if (!agent_) {
-    ROS_WARN_NAMED("agent", "dropping a seed experience: no agent (see the errors above)");
+    RL_AGENT_DROP("dropping a seed experience: no agent (see the errors above)");
     return;
   }
   if (!validState(msg->from_state, "seed experience") ||
-      !validState(msg->to_state, "seed experience") || !std::isfinite(msg->reward) ||
-      msg->action < 0 || msg->action >= description_->numActions) {
-    ROS_WARN_NAMED("agent", "dropped a malformed seed experience");
+      !validState(msg->to_state, "seed experience")) {
+    return;  // said by validState
+  }
+  if (!std::isfinite(msg->reward) || msg->action < 0 || msg->action >= description_->numActions) {
+    RL_AGENT_DROP("dropping a seed experience with action " << msg->action << " and reward "
+                                                            << msg->reward << " (valid actions: 0.."
+                                                            << description_->numActions - 1
+                                                            << ", a finite reward)");
     return;
   }
   agent_->seedExperiences({{msg->from_state, msg->action, msg->reward, msg->to_state,
@@ -276,12 +292,12 @@ void AgentNode::onState(const rl_msgs::RLStateReward::ConstPtr& msg) {
     return;
   }
   if (!agent_) {
-    ROS_WARN_NAMED("agent", "dropping a state: no agent (see the errors above)");
+    RL_AGENT_DROP("dropping a state: no agent (see the errors above)");
     return;
   }
   if (!validState(msg->state, "state")) return;
   if (!std::isfinite(msg->reward)) {
-    ROS_WARN_STREAM_NAMED("agent", "dropping a state with reward " << msg->reward);
+    RL_AGENT_DROP("dropping a state with reward " << msg->reward);
     return;
   }
   try {

@@ -102,8 +102,9 @@ void EnvironmentNode::publishState(float reward) {
 void EnvironmentNode::onAction(const rl_msgs::RLAction::ConstPtr& msg) {
   const int a = msg->action;
   if (a < 0 || a >= env_->numActions()) {
-    ROS_WARN_STREAM_NAMED(
-        "env", "dropping action " << a << ": valid actions are 0.." << env_->numActions() - 1);
+    const std::string line = "dropping action " + std::to_string(a) + ": valid actions are 0.." +
+                             std::to_string(env_->numActions() - 1);
+    if (auto l = dropLog_.admit(line)) ROS_WARN_STREAM_NAMED("env", *l);
     return;
   }
   const float r = env_->apply(a);

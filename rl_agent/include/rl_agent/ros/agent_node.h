@@ -44,6 +44,7 @@
 #include "rl_agent/journal/experience_journal.h"
 #include "rl_common/agent.h"
 #include "rl_common/environment.h"
+#include "rl_common/rate_limited_log.h"
 #include "rl_common/true_model.h"
 
 namespace rl_agent {
@@ -115,6 +116,8 @@ class AgentNode {
   /// An action chosen while no environment subscribed to rl_action; sent when one does.
   std::optional<rl_msgs::RLAction> heldAction_;
   ros::ServiceServer resetSrv_;
+  /// Malformed messages: one warning each, at most 10 a second (a burst is counted, not logged).
+  mutable rl_common::RateLimitedLog dropLog_;
 };
 
 }  // namespace rl_agent

@@ -27,6 +27,7 @@
 #include <memory>
 
 #include "rl_common/environment.h"
+#include "rl_common/rate_limited_log.h"
 
 namespace rl_env {
 
@@ -67,6 +68,8 @@ class EnvironmentNode {
   ros::Subscriber actionSub_, infoSub_;
   ros::ServiceServer resetSrv_;
   ros::WallTimer readyTimer_;
+  /// Malformed actions: one warning each, at most 10 a second (a burst is counted, not logged).
+  rl_common::RateLimitedLog dropLog_;
 };
 
 }  // namespace rl_env
