@@ -226,6 +226,14 @@ double StateSpacePlanner::backup(int s, int a) const {
   return n.reward[ai] + config_.gamma * n.continueProb[ai] * future;
 }
 
+double StateSpacePlanner::backup(int s, int a, const std::vector<double>& values) const {
+  const Node& n = states_[static_cast<std::size_t>(s)];
+  const auto ai = static_cast<std::size_t>(a);
+  double future = 0.0;
+  for (const auto& succ : n.next[ai]) future += succ.p * values[static_cast<std::size_t>(succ.state)];
+  return n.reward[ai] + config_.gamma * n.continueProb[ai] * future;
+}
+
 bool StateSpacePlanner::allows(const rl_common::PlanningBudget& budget, long done) const {
   if (done >= config_.maxIterations) return false;
   if (rl_common::stopRequested()) return false;  // SIGINT: end the step now

@@ -9,15 +9,21 @@ long ValueIteration::solve(const rl_common::PlanningBudget& budget,
                            const std::vector<int>& /*changed*/) {
   long sweeps = 0;
   const int A = config_.numActions;
+  // max_a Q(s, a) of every state, kept current after each backup: the same in-place
+  // (Gauss-Seidel) sweep as recomputing it per successor, without the repeated scans.
+  std::vector<double> values(states_.size());
+  for (std::size_t s = 0; s < states_.size(); ++s) values[s] = maxQ(static_cast<int>(s));
   while (allows(budget, sweeps)) {
     double maxChange = 0.0;
     for (int s = 0; s < static_cast<int>(states_.size()); ++s) {
+      auto& q = states_[static_cast<std::size_t>(s)].q;
       if (!states_[static_cast<std::size_t>(s)].expanded) continue;
       for (int a = 0; a < A; ++a) {
-        const double q = backup(s, a);
-        double& old = states_[static_cast<std::size_t>(s)].q[static_cast<std::size_t>(a)];
-        maxChange = std::max(maxChange, std::fabs(q - old));
-        old = q;
+        const double backedUp = backup(s, a, values);
+        double& old = q[static_cast<std::size_t>(a)];
+        maxChange = std::max(maxChange, std::fabs(backedUp - old));
+        old = backedUp;
+        values[static_cast<std::size_t>(s)] = *std::max_element(q.begin(), q.end());
       }
     }
     ++sweeps;
