@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
                "folder for the logs (auto: a new folder under ROS_HOME/rl_experiment; none: no "
                "files)");
   parser.flag("force", &config.force, true, "overwrite the results in --out");
+  parser.flag("resume", &config.resume, true,
+              "finish the unfinished trials in --out (the same options as the run it resumes)");
   parser.value("label", &config.label, "name of this run in figures");
   parser.value("agent", &config.agent, "the agent node's type (recorded in the logs)");
   parser.value("env", &config.env, "the env node's environment (recorded in the logs)");
@@ -38,6 +40,10 @@ int main(int argc, char** argv) {
     pnh = std::make_unique<ros::NodeHandle>("~");
     rl_common::loadPrivateParams(parser, *pnh);
     parser.parse(argc, argv);  // the command line wins over parameters
+    if (config.resume && (config.force || config.out.empty() || config.out == "auto")) {
+      throw rl_common::OptionError(
+          "option --resume needs the --out folder of the run to finish, and not --force");
+    }
   } catch (const std::exception& e) {
     std::cerr << "experiment_node: " << e.what() << "\n(see experiment_node --help)\n";
     return 2;
@@ -58,6 +64,7 @@ int main(int argc, char** argv) {
   rl_experiment::ExperimentConfig ec;
   ec.out = config.out;
   ec.force = config.force;
+  ec.resume = config.resume;
   ec.trials = config.trials;
   ec.label = config.label;
   ec.env.seed = config.seed;

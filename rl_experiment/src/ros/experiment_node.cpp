@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <iostream>
+#include <vector>
 
 namespace rl_experiment {
 
@@ -140,7 +141,18 @@ bool ExperimentNode::runTrial(int trial) {
 
 int ExperimentNode::run() {
   int failed = 0;
-  for (int trial = 0; trial < config_.trials && ros::ok(); ++trial) {
+  std::vector<int> trials;
+  if (experiment_ != nullptr) {
+    trials = experiment_->pendingTrials();  // with --resume, the unfinished ones
+  } else {
+    for (int t = 0; t < config_.trials; ++t) trials.push_back(t);
+  }
+  if (static_cast<int>(trials.size()) < config_.trials) {
+    publishProgress("resuming: " + std::to_string(config_.trials - int(trials.size())) +
+                    " trial(s) already finished");
+  }
+  for (int trial : trials) {
+    if (!ros::ok()) break;
     if (!runTrial(trial)) ++failed;
     if (experiment_ != nullptr) experiment_->collect();
   }

@@ -6,7 +6,9 @@
  * environment seed), then the agent (rl_agent/reset, with the agent seed), counts the steps it
  * sees on rl_env/rl_state_reward (with the action from rl_agent/rl_action and the intrinsic parts
  * from rl_agent/rl_reward_breakdown), and ends the trial after `steps` steps. Progress goes out
- * on rl_experiment/progress (std_msgs/String) and to the log.
+ * on rl_experiment/progress (std_msgs/String) and to the log. With `resume` it runs only the
+ * trials whose summary is not in the run folder yet (a killed run keeps its finished trials),
+ * as the standalone runner's --resume.
  *
  * Limits of the ROS mode: the agent and environment keep running between trials, so a step or
  * two around a reset may belong to neither trial; the model accuracy and the press locations
@@ -35,6 +37,7 @@ struct NodeConfig {
   std::uint64_t seed = 1;          ///< --seed: the run seed
   std::string out;                 ///< --out folder
   bool force = false;              ///< --force
+  bool resume = false;             ///< --resume: run only the trials without a summary in --out
   std::string label = "ros";       ///< --label
   std::string agent = "texplore";  ///< --agent (recorded only)
   std::string env = "lightworld";  ///< --env (recorded only)
