@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
@@ -115,6 +116,10 @@ ExperienceJournalWriter::ExperienceJournalWriter(const std::string& path, int nu
   const bool fresh = !probe || probe.tellg() == 0;
   probe.close();
   if (fresh) {
+    // The run folder may not exist yet (an experiment node creates it as the agent starts).
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    std::error_code ec;
+    if (!parent.empty()) std::filesystem::create_directories(parent, ec);
     file_ = std::fopen(path.c_str(), "wb");
     if (file_ == nullptr) {
       throw std::runtime_error("experience journal '" + path + "': cannot be created: " +
