@@ -185,10 +185,10 @@ TEST(ModelBasedAgent, TaskKeyFeaturesMustExist) {
 
 TEST(ModelBasedAgent, DeferRegionsNeedADeferral) {
   // Without a deferral --deferregions would change nothing: an error, not a silent no-op.
-  EXPECT_THROW(ModelBasedAgent(texplore({"--rollouts", "5", "--explore", "random",
-                                         "--deferregions", "2"}),
-                               corridorTask()),
-               std::invalid_argument);
+  EXPECT_THROW(
+      ModelBasedAgent(texplore({"--rollouts", "5", "--explore", "random", "--deferregions", "2"}),
+                      corridorTask()),
+      std::invalid_argument);
   EXPECT_THROW(ModelBasedAgent(texplore({"--rollouts", "5", "--explore", "variancenovelty", "--v",
                                          "1", "--n", "3", "--defer", "0", "--deferregions", "2"}),
                                corridorTask()),

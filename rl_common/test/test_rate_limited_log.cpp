@@ -15,7 +15,8 @@ TEST(RateLimitedLog, OneLinePerMessageUntilABurstThenACount) {
   for (int i = 0; i < 500; ++i) EXPECT_FALSE(log.admit("burst", ms(30 + i)).has_value());
   EXPECT_EQ(log.heldBack(), 500);
   // A new second: the next line goes out and says how many were held back.
-  EXPECT_EQ(log.admit("d", ms(1000)), std::optional<std::string>("d (500 similar lines held back)"));
+  EXPECT_EQ(log.admit("d", ms(1000)),
+            std::optional<std::string>("d (500 similar lines held back)"));
   EXPECT_EQ(log.heldBack(), 0);
   EXPECT_EQ(log.admit("e", ms(1001)), std::optional<std::string>("e"));
   EXPECT_EQ(log.admit("f", ms(1002)), std::optional<std::string>("f"));

@@ -171,8 +171,8 @@ TEST(Experiment, JournalKeepsEveryTrialsExperiences) {
   const auto seeds = rl_experiment::parseCsv(rl_experiment::readFile(out + "/seeds.csv"));
   ASSERT_EQ(seeds.size(), 3u);
   for (int trial = 0; trial < 2; ++trial) {
-    const auto j = rl_agent::readExperienceJournal(out + "/journal-00" + std::to_string(trial) +
-                                                   ".rlj");
+    const auto j =
+        rl_agent::readExperienceJournal(out + "/journal-00" + std::to_string(trial) + ".rlj");
     EXPECT_EQ(j.numFeatures, 17);
     // 60 steps: the agent learns from the 59 that a next state followed.
     ASSERT_EQ(j.records.size(), 59u);
@@ -196,11 +196,11 @@ TEST(Experiment, JournalKeepsEveryTrialsExperiences) {
 TEST(Experiment, CheckBuildsTheAgentForTheTask) {
   // Rules that need the task or the explorer fail --check too, not only the first trial.
   const std::string check = std::string(EXPERIMENT_BIN) + " --env lightworld --agent texplore ";
-  const auto [bad, badText] =
-      shell(check + "--rollouts 5 --taskplanner vi --taskkey 0,17 --check");
+  const auto [bad, badText] = shell(check + "--rollouts 5 --taskplanner vi --taskkey 0,17 --check");
   EXPECT_EQ(bad, 2);
   EXPECT_NE(badText.find("--taskkey feature 17 out of range"), std::string::npos) << badText;
-  const auto [idle, idleText] = shell(check + "--rollouts 5 --explore random --deferregions 2 --check");
+  const auto [idle, idleText] =
+      shell(check + "--rollouts 5 --explore random --deferregions 2 --check");
   EXPECT_EQ(idle, 2);
   EXPECT_NE(idleText.find("--deferregions needs a deferral"), std::string::npos) << idleText;
   EXPECT_EQ(shell(check + "--rollouts 5 --v 1 --n 3 --deferregions 2 --check").first, 0);

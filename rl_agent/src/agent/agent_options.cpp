@@ -216,11 +216,11 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
   lambdaAgents.push_back("sarsa");
   requireAgent(p, o, "lambda", lambdaAgents);
   for (const char* option :
-       {"actrate",     "m",           "model",      "planner",    "combo",         "nmodels",
-        "reltrans",    "abstrans",    "v",          "n",          "history",       "rollouts",
-        "tau",         "pathvisits",  "ucb",        "ucbc",       "bonusonce",     "taskucb",
-        "taskucbc",    "depth",       "minprob",    "novelty",    "taskplanner",   "taskdepth",
-        "taskkey",     "taskminprob", "tasksweeps", "taskrecent", "searchthreads", "defer",
+       {"actrate",      "m",           "model",      "planner",    "combo",         "nmodels",
+        "reltrans",     "abstrans",    "v",          "n",          "history",       "rollouts",
+        "tau",          "pathvisits",  "ucb",        "ucbc",       "bonusonce",     "taskucb",
+        "taskucbc",     "depth",       "minprob",    "novelty",    "taskplanner",   "taskdepth",
+        "taskkey",      "taskminprob", "tasksweeps", "taskrecent", "searchthreads", "defer",
         "deferregions", "taskoutcomes"}) {
     requireAgent(p, o, option, kModelBased);
   }

@@ -17,8 +17,7 @@ const char* const kMagic = "RL_EXPERIENCE_JOURNAL 1";
 constexpr int kMaxFeatures = 65536;  // as the agent node's description limit
 
 std::size_t recordBytes(int n) {
-  return 2 * static_cast<std::size_t>(n) * sizeof(float) + sizeof(std::int32_t) + sizeof(float) +
-         1;
+  return 2 * static_cast<std::size_t>(n) * sizeof(float) + sizeof(std::int32_t) + sizeof(float) + 1;
 }
 
 std::string oneLine(std::string s) {
@@ -122,8 +121,8 @@ ExperienceJournalWriter::ExperienceJournalWriter(const std::string& path, int nu
     if (!parent.empty()) std::filesystem::create_directories(parent, ec);
     file_ = std::fopen(path.c_str(), "wb");
     if (file_ == nullptr) {
-      throw std::runtime_error("experience journal '" + path + "': cannot be created: " +
-                               std::strerror(errno));
+      throw std::runtime_error("experience journal '" + path +
+                               "': cannot be created: " + std::strerror(errno));
     }
     std::string head = std::string(kMagic) + "\n";
     for (const auto& [key, value] : header) head += oneLine(key) + " " + oneLine(value) + "\n";
@@ -146,13 +145,13 @@ ExperienceJournalWriter::ExperienceJournalWriter(const std::string& path, int nu
   // A record cut by a kill: drop its bytes so the next record starts on a record boundary.
   if (existing.contents.droppedBytes > 0 &&
       ::truncate(path.c_str(), static_cast<off_t>(existing.wholeBytes)) != 0) {
-    throw std::runtime_error("experience journal '" + path + "': cannot cut its partial record: " +
-                             std::strerror(errno));
+    throw std::runtime_error("experience journal '" + path +
+                             "': cannot cut its partial record: " + std::strerror(errno));
   }
   file_ = std::fopen(path.c_str(), "ab");
   if (file_ == nullptr) {
-    throw std::runtime_error("experience journal '" + path + "': cannot be appended to: " +
-                             std::strerror(errno));
+    throw std::runtime_error("experience journal '" + path +
+                             "': cannot be appended to: " + std::strerror(errno));
   }
   records_ = static_cast<long>(existing.contents.records.size());
 }
@@ -164,10 +163,9 @@ ExperienceJournalWriter::~ExperienceJournalWriter() {
 void ExperienceJournalWriter::append(const rl_common::Experience& e) {
   const auto n = static_cast<std::size_t>(numFeatures_);
   if (e.s.size() != n || e.next.size() != n) {
-    throw std::invalid_argument("experience journal '" + path_ + "': an experience with " +
-                                std::to_string(e.s.size()) + " and " +
-                                std::to_string(e.next.size()) + " features, expected " +
-                                std::to_string(n));
+    throw std::invalid_argument(
+        "experience journal '" + path_ + "': an experience with " + std::to_string(e.s.size()) +
+        " and " + std::to_string(e.next.size()) + " features, expected " + std::to_string(n));
   }
   std::string record;
   record.reserve(recordBytes(numFeatures_));
@@ -180,8 +178,8 @@ void ExperienceJournalWriter::append(const rl_common::Experience& e) {
   // One write and a flush per record: a kill loses at most the record being written.
   if (std::fwrite(record.data(), 1, record.size(), file_) != record.size() ||
       std::fflush(file_) != 0) {
-    throw std::runtime_error("experience journal '" + path_ + "': write failed: " +
-                             std::strerror(errno));
+    throw std::runtime_error("experience journal '" + path_ +
+                             "': write failed: " + std::strerror(errno));
   }
   ++records_;
 }

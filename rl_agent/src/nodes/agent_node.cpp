@@ -88,7 +88,7 @@ std::string autoJournalPath() {
   }
   const std::filesystem::path dir =
       std::filesystem::path(rosHome != nullptr && *rosHome != '\0' ? rosHome
-                                                                     : std::string(home) + "/.ros") /
+                                                                   : std::string(home) + "/.ros") /
       "rl_agent" / "journals";
   std::filesystem::create_directories(dir);
   const std::time_t now = std::time(nullptr);
@@ -165,8 +165,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  rl_agent::AgentNode node(ros::NodeHandle(), options, std::move(trueModelEnv),
-                           std::move(journal));
+  rl_agent::AgentNode node(ros::NodeHandle(), options, std::move(trueModelEnv), std::move(journal));
   ros::spin();
   return node.failed() ? 1 : 0;
 }

@@ -42,7 +42,8 @@ StateSpacePlanner::StateSpacePlanner(const Config& config, std::uint64_t seed)
       throw std::invalid_argument("StateSpacePlanner::StateSpacePlanner(): key feature " +
                                   std::to_string(f) + " out of range");
     }
-    if (static_cast<std::size_t>(f) >= isKey_.size()) isKey_.resize(static_cast<std::size_t>(f) + 1, 0);
+    if (static_cast<std::size_t>(f) >= isKey_.size())
+      isKey_.resize(static_cast<std::size_t>(f) + 1, 0);
     isKey_[static_cast<std::size_t>(f)] = 1;
   }
 }
@@ -230,7 +231,8 @@ double StateSpacePlanner::backup(int s, int a, const std::vector<double>& values
   const Node& n = states_[static_cast<std::size_t>(s)];
   const auto ai = static_cast<std::size_t>(a);
   double future = 0.0;
-  for (const auto& succ : n.next[ai]) future += succ.p * values[static_cast<std::size_t>(succ.state)];
+  for (const auto& succ : n.next[ai])
+    future += succ.p * values[static_cast<std::size_t>(succ.state)];
   return n.reward[ai] + config_.gamma * n.continueProb[ai] * future;
 }
 

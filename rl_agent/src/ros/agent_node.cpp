@@ -14,13 +14,13 @@
 #include "rl_agent/journal/journaling_agent.h"
 
 // A "dropping ..." warning through the node's rate limit (rl_common::RateLimitedLog).
-#define RL_AGENT_DROP(stream)                                   \
-  do {                                                          \
-    std::ostringstream dropLine_;                               \
-    dropLine_ << stream;                                        \
-    if (auto l_ = dropLog_.admit(dropLine_.str())) {            \
-      ROS_WARN_STREAM_NAMED("agent", *l_);                      \
-    }                                                           \
+#define RL_AGENT_DROP(stream)                        \
+  do {                                               \
+    std::ostringstream dropLine_;                    \
+    dropLine_ << stream;                             \
+    if (auto l_ = dropLog_.admit(dropLine_.str())) { \
+      ROS_WARN_STREAM_NAMED("agent", *l_);           \
+    }                                                \
   } while (0)
 
 namespace rl_agent {
@@ -30,10 +30,12 @@ namespace {
 /// Seed experiences kept while no description has arrived.
 constexpr std::size_t kMaxEarlySeeds = 100000;
 
-/// The env sends one state per action, but any node may publish on the state topic: with the
-/// original's queue of 1, a foreign message arriving before the callback pushes the env's state
-/// out, the agent never answers it and the pair stalls. A deeper queue loses nothing.
-constexpr uint32_t kStateQueue = 10;
+/// The env sends one state per action, but any node may publish on the state topic: when the
+/// queue overflows (the original's holds 1), a foreign message arriving before the callback
+/// pushes the env's state out, the agent never answers it and the pair stalls. With 10, a
+/// burst of 550 malformed states did that on a loaded machine (nodes_fuzz.test); the queue
+/// holds only messages waiting for a callback, so a deep one costs nothing in normal running.
+constexpr uint32_t kStateQueue = 10000;
 
 bool allFinite(const std::vector<float>& v) {
   for (float x : v) {
@@ -101,8 +103,7 @@ rl_common::EnvironmentDescription fromMessage(const rl_msgs::RLEnvDescription& m
 }
 
 AgentNode::AgentNode(ros::NodeHandle nh, const AgentOptions& options,
-                     std::unique_ptr<rl_common::Environment> trueModelEnv,
-                     JournalSettings journal)
+                     std::unique_ptr<rl_common::Environment> trueModelEnv, JournalSettings journal)
     : nh_(nh),
       options_(options),
       trueModelEnv_(std::move(trueModelEnv)),
@@ -170,8 +171,8 @@ void AgentNode::buildAgent() {
     }
     agent->seedExperiences(resume_->records);
     ROS_INFO_STREAM_NAMED("agent", "rebuilt the model from the " << resume_->records.size()
-                                       << " experiences of journal '" << journalSettings_.resume
-                                       << "'");
+                                                                 << " experiences of journal '"
+                                                                 << journalSettings_.resume << "'");
   }
   core_ = agent.get();
   if (!journalSettings_.journal.empty()) {
@@ -180,8 +181,8 @@ void AgentNode::buildAgent() {
       journal_ = std::make_shared<ExperienceJournalWriter>(journalSettings_.journal, features,
                                                            journalSettings_.header);
       ROS_INFO_STREAM_NAMED("agent", "journaling every experience to '"
-                                         << journalSettings_.journal << "' ("
-                                         << journal_->records() << " records in it)");
+                                         << journalSettings_.journal << "' (" << journal_->records()
+                                         << " records in it)");
     }
     agent = std::make_unique<JournalingAgent>(std::move(agent), journal_);
   }
@@ -246,9 +247,8 @@ void AgentNode::onDescription(const rl_msgs::RLEnvDescription::ConstPtr& msg) {
 
 bool AgentNode::validState(const std::vector<float>& s, const char* what) const {
   if (s.size() != description_->numFeatures()) {
-    RL_AGENT_DROP("dropping a " << what << " with " << s.size()
-                                                 << " features; the environment has "
-                                                 << description_->numFeatures());
+    RL_AGENT_DROP("dropping a " << what << " with " << s.size() << " features; the environment has "
+                                << description_->numFeatures());
     return false;
   }
   if (!allFinite(s)) {
@@ -276,10 +276,9 @@ void AgentNode::onSeed(const rl_msgs::RLEnvSeedExperience::ConstPtr& msg) {
     return;  // said by validState
   }
   if (!std::isfinite(msg->reward) || msg->action < 0 || msg->action >= description_->numActions) {
-    RL_AGENT_DROP("dropping a seed experience with action " << msg->action << " and reward "
-                                                            << msg->reward << " (valid actions: 0.."
-                                                            << description_->numActions - 1
-                                                            << ", a finite reward)");
+    RL_AGENT_DROP("dropping a seed experience with action "
+                  << msg->action << " and reward " << msg->reward << " (valid actions: 0.."
+                  << description_->numActions - 1 << ", a finite reward)");
     return;
   }
   agent_->seedExperiences({{msg->from_state, msg->action, msg->reward, msg->to_state,

@@ -48,8 +48,9 @@ TEST(AgentNode, ResumesFromItsJournalAfterAKill) {
   const std::string dir = "/tmp/rl_journal_rostest_" + std::to_string(::getpid());
   ASSERT_EQ(std::system(("rm -rf " + dir + " && mkdir -p " + dir).c_str()), 0);
   const std::string journal = dir + "/agent.journal";
-  const std::vector<std::string> agent{"--agent", "texplore", "--v", "1", "--n", "3",
-                                       "--rollouts", "20", "--seed", "5", "--journal", journal};
+  const std::vector<std::string> agent{"--agent", "texplore", "--v",        "1",
+                                       "--n",     "3",        "--rollouts", "20",
+                                       "--seed",  "5",        "--journal",  journal};
   const pid_t first = startAgent(agent, dir + "/first.log");
   ASSERT_GT(first, 0);
   ASSERT_TRUE(waitFor([&] { return records(journal) >= 150; }, 60.0))

@@ -118,9 +118,15 @@ TEST(NodesFuzz, MalformedMessagesAreLoggedOnceAndDropped) {
   inf[0] = kInf;
   negInf[16] = -kInf;
   const std::vector<rl_msgs::RLStateReward> states = {
-      state({}),           state(std::vector<float>(kFeatures + 1, 1.0f)),
-      state(std::vector<float>(1000, 1.0f)), state(nan), state(inf), state(negInf),
-      state(ok, kNaN),     state(ok, kInf),    state(ok, -kInf)};
+      state({}),
+      state(std::vector<float>(kFeatures + 1, 1.0f)),
+      state(std::vector<float>(1000, 1.0f)),
+      state(nan),
+      state(inf),
+      state(negInf),
+      state(ok, kNaN),
+      state(ok, kInf),
+      state(ok, -kInf)};
   const std::vector<rl_msgs::RLEnvSeedExperience> seeds = {
       seed({1.0f}, ok, 0, 0.0f), seed(ok, nan, 0, 0.0f), seed(ok, ok, -1, 0.0f),
       seed(ok, ok, 99, 0.0f), seed(ok, ok, 0, kNaN)};
@@ -152,7 +158,8 @@ TEST(NodesFuzz, MalformedMessagesAreLoggedOnceAndDropped) {
 
   // The pair keeps stepping, and the agent still answers the env's states.
   long before = actions;
-  EXPECT_TRUE(spinUntil([&] { return actions >= before + 50; }, 30.0)) << "stopped after the replay";
+  EXPECT_TRUE(spinUntil([&] { return actions >= before + 50; }, 30.0))
+      << "stopped after the replay";
 
   // A burst: 50 malformed states within 0.3 s (spaced so that the agent's state queue of 10
   // loses none), then 500 at once. The log counts them instead of writing a line each.

@@ -36,10 +36,8 @@ struct Actions {
   long count = 0;
   ros::Subscriber sub;
   explicit Actions(ros::NodeHandle& nh)
-      : sub(nh.subscribe<rl_msgs::RLAction>("rl_agent/rl_action", 1000,
-                                            [this](const rl_msgs::RLAction::ConstPtr&) {
-                                              ++count;
-                                            })) {}
+      : sub(nh.subscribe<rl_msgs::RLAction>(
+            "rl_agent/rl_action", 1000, [this](const rl_msgs::RLAction::ConstPtr&) { ++count; })) {}
   /// True once `more` actions beyond the count now have been seen (within `seconds`).
   bool grows(long more, double seconds) {
     const long target = count + more;
@@ -64,22 +62,22 @@ TEST(StartOrders, AgentFirstEnvFirstAndTheEnvRestartedMidRun) {
   const pid_t agent = startAgent("agent1.log");
   ros::WallDuration(2.0).sleep();
   pid_t env = startEnv("env1.log");
-  EXPECT_TRUE(actions.grows(200, 30.0))
-      << "agent first: " << actions.count << " actions\n" << logs({"agent1.log", "env1.log"});
+  EXPECT_TRUE(actions.grows(200, 30.0)) << "agent first: " << actions.count << " actions\n"
+                                        << logs({"agent1.log", "env1.log"});
 
   // The env dies mid-run (SIGKILL: no clean shutdown) and is started again.
   test_nodes::stop(env, SIGKILL);
   ros::WallDuration(1.0).sleep();
   env = startEnv("env2.log");
-  EXPECT_TRUE(actions.grows(200, 30.0))
-      << "env restarted: " << actions.count << " actions\n" << logs({"agent1.log", "env2.log"});
+  EXPECT_TRUE(actions.grows(200, 30.0)) << "env restarted: " << actions.count << " actions\n"
+                                        << logs({"agent1.log", "env2.log"});
   test_nodes::stop(agent, SIGINT);
 
   // The env already runs (its state latched) when the agent starts.
   ros::WallDuration(1.0).sleep();
   const pid_t agent2 = startAgent("agent2.log");
-  EXPECT_TRUE(actions.grows(200, 30.0))
-      << "env first: " << actions.count << " actions\n" << logs({"agent2.log", "env2.log"});
+  EXPECT_TRUE(actions.grows(200, 30.0)) << "env first: " << actions.count << " actions\n"
+                                        << logs({"agent2.log", "env2.log"});
   test_nodes::stop(agent2, SIGINT);
   test_nodes::stop(env, SIGINT);
 }
@@ -116,8 +114,8 @@ TEST(StartOrders, AnEnvironmentThatSendsNoSeeds) {
   s.state = {x};
   states.publish(s);
   const pid_t agent = startAgent("agent3.log");
-  EXPECT_TRUE(spinUntil([&] { return answered >= 100; }, 30.0))
-      << answered << " actions\n" << logs({"agent3.log"});
+  EXPECT_TRUE(spinUntil([&] { return answered >= 100; }, 30.0)) << answered << " actions\n"
+                                                                << logs({"agent3.log"});
   test_nodes::stop(agent, SIGINT);
   std::system(("rm -rf " + kLogs).c_str());
 }

@@ -47,10 +47,10 @@ JournalContents readExperienceJournal(const std::string& path);
 class ExperienceJournalWriter {
  public:
   /// Opens `path` for `numFeatures`-feature experiences. A missing or empty file gets
-  /// `header` (its folder is created if missing); an existing journal is appended to (after a partial last record is cut off),
-  /// which is how a resumed agent goes on writing the journal it was rebuilt from. Throws
-  /// std::runtime_error if the file cannot be opened, is not a journal, or is one of another
-  /// feature count (it is never overwritten).
+  /// `header` (its folder is created if missing); an existing journal is appended to (after a
+  /// partial last record is cut off), which is how a resumed agent goes on writing the journal it
+  /// was rebuilt from. Throws std::runtime_error if the file cannot be opened, is not a journal, or
+  /// is one of another feature count (it is never overwritten).
   ExperienceJournalWriter(const std::string& path, int numFeatures, const JournalHeader& header);
   ~ExperienceJournalWriter();
   ExperienceJournalWriter(const ExperienceJournalWriter&) = delete;
