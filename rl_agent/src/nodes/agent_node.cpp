@@ -9,16 +9,16 @@
 #include <unistd.h>
 
 #include <csignal>
-#include <cstdlib>
-#include <ctime>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 
 #include "rl_agent/agent/agent_registry.h"
 #include "rl_agent/journal/experience_journal.h"
 #include "rl_agent/ros/agent_node.h"
 #include "rl_common/ros/param_loader.h"
+#include "rl_common/ros/ros_home.h"
 #include "rl_common/stop_request.h"
 #include "rl_common/true_model.h"
 #include "rl_env/env/environment_registry.h"
@@ -81,20 +81,12 @@ void onSigint(int) {
 /// ROS_HOME/rl_agent/journals/journal-<local time>-<pid>.rlj (ROS_HOME: ~/.ros if unset),
 /// its folder created.
 std::string autoJournalPath() {
-  const char* rosHome = std::getenv("ROS_HOME");
-  const char* home = std::getenv("HOME");
-  if ((rosHome == nullptr || *rosHome == '\0') && home == nullptr) {
-    throw std::runtime_error("neither ROS_HOME nor HOME is set");
-  }
-  const std::filesystem::path dir =
-      std::filesystem::path(rosHome != nullptr && *rosHome != '\0' ? rosHome
-                                                                   : std::string(home) + "/.ros") /
-      "rl_agent" / "journals";
+  const std::string home = rl_common::rosHome();
+  if (home.empty()) throw std::runtime_error("neither ROS_HOME nor HOME is set");
+  const std::filesystem::path dir = std::filesystem::path(home) / "rl_agent" / "journals";
   std::filesystem::create_directories(dir);
-  const std::time_t now = std::time(nullptr);
-  char stamp[32];
-  std::strftime(stamp, sizeof(stamp), "%Y%m%d-%H%M%S", std::localtime(&now));
-  return (dir / ("journal-" + std::string(stamp) + "-" + std::to_string(::getpid()) + ".rlj"))
+  return (dir /
+          ("journal-" + rl_common::localTimestamp() + "-" + std::to_string(::getpid()) + ".rlj"))
       .string();
 }
 

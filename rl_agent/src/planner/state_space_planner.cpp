@@ -220,20 +220,11 @@ double StateSpacePlanner::maxQ(int s) const {
 }
 
 double StateSpacePlanner::backup(int s, int a) const {
-  const Node& n = states_[static_cast<std::size_t>(s)];
-  const auto ai = static_cast<std::size_t>(a);
-  double future = 0.0;
-  for (const auto& succ : n.next[ai]) future += succ.p * maxQ(succ.state);
-  return n.reward[ai] + config_.gamma * n.continueProb[ai] * future;
+  return backupWith(s, a, [this](int j) { return maxQ(j); });
 }
 
 double StateSpacePlanner::backup(int s, int a, const std::vector<double>& values) const {
-  const Node& n = states_[static_cast<std::size_t>(s)];
-  const auto ai = static_cast<std::size_t>(a);
-  double future = 0.0;
-  for (const auto& succ : n.next[ai])
-    future += succ.p * values[static_cast<std::size_t>(succ.state)];
-  return n.reward[ai] + config_.gamma * n.continueProb[ai] * future;
+  return backupWith(s, a, [&values](int j) { return values[static_cast<std::size_t>(j)]; });
 }
 
 bool StateSpacePlanner::allows(const rl_common::PlanningBudget& budget, long done) const {

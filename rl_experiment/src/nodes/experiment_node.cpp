@@ -3,12 +3,11 @@
 // come from ~private parameters (dashes become underscores); the command line wins.
 #include <ros/ros.h>
 
-#include <cstdlib>
-#include <ctime>
 #include <iostream>
 #include <memory>
 
 #include "rl_common/ros/param_loader.h"
+#include "rl_common/ros/ros_home.h"
 #include "rl_experiment/ros/experiment_node.h"
 
 int main(int argc, char** argv) {
@@ -49,15 +48,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (config.out == "auto") {
-    const char* rosHome = std::getenv("ROS_HOME");
-    const char* home = std::getenv("HOME");
-    const std::string base = rosHome != nullptr ? rosHome
-                             : home != nullptr  ? std::string(home) + "/.ros"
-                                                : std::string("/tmp");
-    char stamp[32];
-    const std::time_t now = std::time(nullptr);
-    std::strftime(stamp, sizeof(stamp), "%Y%m%d-%H%M%S", std::localtime(&now));
-    config.out = base + "/rl_experiment/run-" + stamp;
+    const std::string home = rl_common::rosHome();
+    config.out = (home.empty() ? std::string("/tmp") : home) + "/rl_experiment/run-" +
+                 rl_common::localTimestamp();
   }
   std::string commandLine;
   for (int i = 0; i < argc; ++i) commandLine += (i > 0 ? " " : "") + std::string(argv[i]);

@@ -128,6 +128,15 @@ class StateSpacePlanner : public rl_common::Planner {
   /// recomputed for every successor: value iteration keeps them current as it sweeps.
   double backup(int s, int a, const std::vector<double>& values) const;
   double maxQ(int s) const;
+  /// R + γ(1−T) Σ P value(s') for (s, a), with value(j) the value of table state j.
+  template <class Value>
+  double backupWith(int s, int a, const Value& value) const {
+    const Node& n = states_[static_cast<std::size_t>(s)];
+    const auto ai = static_cast<std::size_t>(a);
+    double future = 0.0;
+    for (const auto& succ : n.next[ai]) future += succ.p * value(succ.state);
+    return n.reward[ai] + config_.gamma * n.continueProb[ai] * future;
+  }
   /// True if the budget allows another iteration after `done` ones.
   bool allows(const rl_common::PlanningBudget& budget, long done) const;
 
