@@ -3,7 +3,7 @@
 
 Usage: reproduce.py lightworld [--quick] [--out DIR] [--trials N] [--jobs K] [--seed S]
                                [--rollouts R] [--experiment NAME ...] [--lambda L]
-                               [--task-rewards given|learned] [--task-planner same|vi] [--list]
+                               [--task-rewards given|learned] [--task-planner vi|same] [--list]
 
 Experiments (each agent runs --trials trials through the standalone `experiment` runner):
   explore-task  1000 exploration steps without external reward, then 3000 task steps acting
@@ -19,8 +19,10 @@ they fixate on self-loops in LightWorld and TEXPLORE-VANIR explores less than ra
 README's "Known limits"); `--lambda 0.1` runs the original's setting. At the switch to the task
 the model-based agents are given the task's reward of their exploration steps (the runner's
 --task-rewards given, the paper's "provided with a reward function"); --task-rewards learned
-makes them learn it from the task steps only. --task-planner vi plans their task phase by value
-iteration on the learned model instead of UCT (see the README's task-phase section).
+makes them learn it from the task steps only. Their task phase is planned by value iteration on
+the learned model over LightWorld's position, key, door and room (--task-planner vi, the
+default: UCT with 100 rollouts does not plan key, lock and door); --task-planner same plans it
+as they explored (UCT for TEXPLORE, the paper's setting; see the README's task-phase section).
 --quick uses 4 trials and shorter runs (8 minutes on 2 cores). The full run (30 trials, the
 paper's lengths) is estimated at 3-5 hours on 2 cores (not yet measured). Writes run folders,
 figures (PNG, PDF) per experiment and DIR/results.md with the final numbers, 95% intervals and
@@ -168,11 +170,12 @@ def main(argv=None):
                     help="explore-task: model-based agents are given the task's reward of their "
                          "exploration steps at the switch (given, default) or learn it from the "
                          "task steps only (learned)")
-    ap.add_argument("--task-planner", default="same", choices=["same", "vi"],
-                    help="explore-task: how the model-based agents plan the task phase: as they "
-                         "explored (same, default; UCT for TEXPLORE) or by value iteration on "
-                         "the learned model over LightWorld's position, key, door and room "
-                         "features (vi: --taskplanner vi --taskkey %s)" % LIGHTWORLD_TASK_KEY)
+    ap.add_argument("--task-planner", default="vi", choices=["vi", "same"],
+                    help="explore-task: how the model-based agents plan the task phase: by value "
+                         "iteration on the learned model over LightWorld's position, key, door "
+                         "and room features (vi, default: --taskplanner vi --taskkey %s) or as "
+                         "they explored (same: UCT for TEXPLORE, the paper's setting)"
+                         % LIGHTWORLD_TASK_KEY)
     ap.add_argument("--list", action="store_true",
                     help="print each experiment's agents and their options, then exit")
     args = ap.parse_args(argv)

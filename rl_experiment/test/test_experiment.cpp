@@ -273,13 +273,20 @@ TEST(ReproduceScript, ListsThePapersComparisonAgents) {
   EXPECT_EQ(text.find("skipping agent texplore"), std::string::npos) << text;
 }
 
-// --task-planner vi: the explore-task runs of the model-based agents plan their task phase by
-// value iteration over LightWorld's position, key, door and room; the combined runs do not.
+// --task-planner vi (the default): the explore-task runs of the model-based agents plan their
+// task phase by value iteration over LightWorld's position, key, door and room; the combined
+// runs do not; --task-planner same leaves UCT in the task phase.
 TEST(ReproduceScript, TaskPlannerViGoesToTheExploreTaskRunsOnly) {
   const auto [status, text] =
       shell("RL_EXPERIMENT=" + std::string(EXPERIMENT_BIN) + " /usr/bin/python3 " +
-            std::string(REPRODUCE_SCRIPT) + " lightworld --list --task-planner vi");
+            std::string(REPRODUCE_SCRIPT) + " lightworld --list");
   ASSERT_EQ(status, 0) << text;
+  const auto [sameStatus, sameText] =
+      shell("RL_EXPERIMENT=" + std::string(EXPERIMENT_BIN) + " /usr/bin/python3 " +
+            std::string(REPRODUCE_SCRIPT) + " lightworld --list --task-planner same");
+  ASSERT_EQ(sameStatus, 0) << sameText;
+  EXPECT_EQ(sameText.find("--taskplanner"), std::string::npos) << sameText;
+  EXPECT_NE(sameText.find("explore-task, combined: texplore-vanir"), std::string::npos) << sameText;
   const auto line = [&](const std::string& start) {
     const auto at = text.find(start);
     return at == std::string::npos ? std::string() : text.substr(at, text.find('\n', at) - at);

@@ -2,7 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
+
+#include "rl_agent/model/factored_model.h"
+#include "rl_common/random.h"
 
 namespace {
 
@@ -146,4 +150,44 @@ TEST(ModelAccuracy, GroupsSplitTheJointByFeatureValues) {
   EXPECT_TRUE(report.groups.count("f0=2"));
   rl_common::Random rng2(3);
   EXPECT_THROW(acc.evaluateDetailed(Stay(), rng2, 10, {1}), std::invalid_argument);
+}
+
+// The accuracy keeps each state-action's prediction between measurements and refreshes it;
+// every figure must be the one a new evaluator (a query per sample) gives, as the model learns.
+TEST(ModelAccuracy, KeptPredictionsGiveTheFiguresOfANewEvaluator) {
+  const Chain chain;
+  rl_agent::FactoredModel::Config config;
+  config.numActions = 2;
+  config.featMin = {0.0f};
+  config.featMax = {4.0f};
+  config.episodic = false;
+  rl_agent::FactoredModel model(config, 5);
+  rl_experiment::ModelAccuracy kept(chain, 2);
+  rl_common::Random walk(8), keptRng(3), freshRng(3);
+  float x = 0.0f;
+  int measured = 0;
+  for (int t = 0; t < 120; ++t) {
+    const int a = walk.uniformInt(0, 1);
+    const float next = a == 0 && x < 4.0f && walk.uniform() < 0.8 ? x + 1.0f : x;
+    model.update({{{x}, a, 0.0f, {next}, false}});
+    x = next == 4.0f ? 0.0f : next;
+    if (t % 10 != 9) continue;
+    // A measurement of another model in between must not disturb the kept predictions.
+    const Stay stay;
+    rl_common::Random other(1);
+    kept.evaluate(stay, other, 20);
+    rl_experiment::ModelAccuracy fresh(chain, 2);
+    const auto view = model.factoredView();
+    const auto k = kept.evaluateDetailed(*view, keptRng, 50);
+    const auto f = fresh.evaluateDetailed(*view, freshRng, 50);
+    ASSERT_EQ(k.joint, f.joint) << "t " << t;
+    ASSERT_EQ(k.marginal, f.marginal) << "t " << t;
+    ASSERT_EQ(k.perAction.size(), f.perAction.size());
+    for (std::size_t i = 0; i < k.perAction.size(); ++i) {
+      ASSERT_TRUE(k.perAction[i] == f.perAction[i] ||
+                  (std::isnan(k.perAction[i]) && std::isnan(f.perAction[i])));
+    }
+    ++measured;
+  }
+  EXPECT_EQ(measured, 12);
 }

@@ -67,15 +67,33 @@ DeferringView::DeferringView(std::shared_ptr<const rl_common::ModelView> base,
 
 rl_common::StateActionInfo DeferringView::query(const rl_common::State& input, int action) const {
   rl_common::StateActionInfo info = base_->query(input, action);
-  for (const auto& sig : *signatures_) {
-    if (sig.appliesTo(input, action)) {
-      info.termProb = 1.0f;
-      info.reward = info.externalReward = info.varianceReward = info.noveltyReward =
-          info.otherReward = 0.0f;
-      break;
-    }
-  }
+  if (applying(input, action) != nullptr) end(info);
   return info;
+}
+
+void DeferringView::refresh(const rl_common::State& input, int action,
+                            rl_common::StateActionInfo& info,
+                            rl_common::PredictionStamp& stamp) const {
+  if (applying(input, action) != nullptr) {
+    info = base_->query(input, action);
+    end(info);
+    stamp.clear();
+    return;
+  }
+  base_->refresh(input, action, info, stamp);
+}
+
+const OneWaySignature* DeferringView::applying(const rl_common::State& input, int action) const {
+  for (const auto& sig : *signatures_) {
+    if (sig.appliesTo(input, action)) return &sig;
+  }
+  return nullptr;
+}
+
+void DeferringView::end(rl_common::StateActionInfo& info) {
+  info.termProb = 1.0f;
+  info.reward = info.externalReward = info.varianceReward = info.noveltyReward = info.otherReward =
+      0.0f;
 }
 
 StepDeferral::StepDeferral(long steps, long maxRegions)

@@ -1,6 +1,7 @@
 #include "rl_agent/model/factored_model.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -11,6 +12,12 @@ namespace rl_agent {
 namespace {
 
 constexpr float kUnknownReward = -0.001f;
+
+/// A revision no forest of any model had before (so stamps of two models never match).
+std::uint64_t nextRevision() {
+  static std::atomic<std::uint64_t> counter{0};
+  return ++counter;
+}
 
 RandomForest makeForest(const FactoredModel::Config& c, std::uint64_t seed, const char* stream,
                         std::uint64_t index, std::shared_ptr<C45Tree::InputTable> inputs) {
@@ -43,12 +50,20 @@ FactoredModel::FactoredModel(const Config& config, std::uint64_t seed)
   for (std::size_t j = 0; j < config.featMin.size(); ++j) {
     features_.push_back(makeForest(config, seed, "feature", j, inputs_));
   }
+  for (std::size_t k = 0; k < features_.size() + 2; ++k) revisions_.push_back(nextRevision());
 }
 
 bool FactoredModel::update(const std::vector<rl_common::Experience>& experiences) {
   const std::size_t d = config_->featMin.size();
   const std::size_t inputLen = d + static_cast<std::size_t>(config_->extraInputs);
-  bool changed = false;
+  // With the weighted and best combinations every instance moves the trees' accuracies.
+  const Combination combination = config_->forest.combination;
+  const bool anyInstance =
+      combination == Combination::WeightedAverage || combination == Combination::Best;
+  std::vector<char> moved(d + 2, 0);  // per forest: its predictions may have changed
+  const auto add = [&](RandomForest& forest, std::size_t k, std::uint32_t row, float out) {
+    if (forest.addRow(row, out) || anyInstance) moved[k] = 1;
+  };
   std::vector<float> x;
   for (const auto& e : experiences) {
     if (e.s.size() != inputLen || e.next.size() < d) {
@@ -66,12 +81,19 @@ bool FactoredModel::update(const std::vector<rl_common::Experience>& experiences
     if (!e.terminal) {
       for (std::size_t j = 0; j < d; ++j) {
         const float out = config_->relativeTransitions ? e.next[j] - e.s[j] : e.next[j];
-        changed |= features_[j].addRow(row, out);
+        add(features_[j], j, row, out);
       }
     }
-    changed |= reward_.addRow(row, e.reward);
-    if (config_->episodic) changed |= terminal_.addRow(row, e.terminal ? 1.0f : 0.0f);
+    add(reward_, d, row, e.reward);
+    if (config_->episodic) add(terminal_, d + 1, row, e.terminal ? 1.0f : 0.0f);
     ++experiences_;
+  }
+  bool changed = false;
+  for (std::size_t k = 0; k < moved.size(); ++k) {
+    if (moved[k]) {
+      revisions_[k] = nextRevision();
+      changed = true;
+    }
   }
   return changed;
 }
@@ -82,6 +104,7 @@ std::shared_ptr<const FactoredModel::View> FactoredModel::factoredView() const {
   for (const auto& f : features_) v->features_.push_back(f.snapshot());
   v->reward_ = reward_.snapshot();
   v->terminal_ = terminal_.snapshot();
+  v->revisions_ = revisions_;
   v->experiences_ = experiences_;
   return v;
 }
@@ -114,45 +137,81 @@ rl_common::StateActionInfo FactoredModel::View::query(const rl_common::State& in
 
 rl_common::StateActionInfo FactoredModel::View::query(const rl_common::State& input, int action,
                                                       double* variance) const {
+  rl_common::StateActionInfo info;
+  refresh(input, action, info, nullptr, variance);
+  return info;
+}
+
+void FactoredModel::View::refresh(const rl_common::State& input, int action,
+                                  rl_common::StateActionInfo& info,
+                                  rl_common::PredictionStamp* stamp, double* variance) const {
   const std::vector<float> x = treeInput(input, action);
   if (variance != nullptr) *variance = 0.0;
   const std::size_t d = config_->featMin.size();
-  rl_common::StateActionInfo info;
-  const rl_common::State current(input.begin(), input.begin() + d);
+  const std::size_t outputs = d + 2;
   if (experiences_ == 0) {
     if (variance != nullptr) *variance = this->variance(input, action);
-    info.transitions.emplace_back(current, 1.0);
+    info = rl_common::StateActionInfo();
+    info.transitions.emplace_back(rl_common::State(input.begin(), input.begin() + d), 1.0);
     info.reward = info.externalReward = kUnknownReward;
     info.known = false;
-    return info;
+    if (stamp != nullptr) stamp->clear();
+    return;
   }
+  // The stamp's parts: parts[0] the terminal forest's expectation (a bonus may overwrite
+  // termProb in `info`, so it is kept here), parts[1 + k] output k's variance when computed.
+  // They hold if the stamp came from this model (its revisions) and has what is asked.
+  const bool reuse = stamp != nullptr && info.known && info.transitions.empty() &&
+                     info.factored.size() == d && stamp->revisions.size() == outputs &&
+                     !stamp->parts.empty() &&
+                     (variance == nullptr || stamp->parts.size() == 1 + outputs);
+  thread_local std::vector<double> scratch;  // the parts of a query without a stamp
+  std::vector<double>& parts = stamp != nullptr ? stamp->parts : scratch;
+  if (!reuse) {
+    info.transitions.clear();
+    info.factored.resize(d);
+    parts.assign(variance != nullptr ? 1 + outputs : 1, 0.0);
+  }
+  const bool keepVariances = parts.size() == 1 + outputs;
+  const auto stale = [&](std::size_t k) { return !reuse || stamp->revisions[k] != revisions_[k]; };
+  double part = 0.0;
+  const auto predict = [&](const RandomForest::Snapshot& forest, std::size_t k) {
+    if (!keepVariances) return forest.predict(x);
+    Distribution dist = forest.predict(x, &part);
+    parts[1 + k] = part;
+    return dist;
+  };
   // One distribution per feature; their independent product is the next-state distribution
   // (never expanded here: with 17 features it can have millions of outcomes).
-  // D sums in variance()'s order: the features, the reward, the terminal output.
-  double sum = 0.0, part = 0.0;
-  info.factored.resize(d);
   for (std::size_t j = 0; j < d; ++j) {
-    Distribution dist = variance ? features_[j].predict(x, &part) : features_[j].predict(x);
-    sum += part;
+    if (!stale(j)) continue;
+    Distribution dist = predict(features_[j], j);
     if (config_->relativeTransitions) {
-      for (auto& outcome : dist) outcome.first = current[j] + outcome.first;
+      for (auto& outcome : dist) outcome.first = input[j] + outcome.first;
     }
     info.factored[j] = std::move(dist);
   }
-  info.reward = info.externalReward =
-      static_cast<float>(expectation(variance ? reward_.predict(x, &part) : reward_.predict(x)));
-  sum += part;
-  if (config_->episodic) {
+  if (stale(d)) info.externalReward = static_cast<float>(expectation(predict(reward_, d)));
+  if (config_->episodic && stale(d + 1)) {
     double t = 0.0;
-    for (const auto& [value, p] : variance ? terminal_.predict(x, &part) : terminal_.predict(x)) {
+    for (const auto& [value, p] : predict(terminal_, d + 1)) {
       t += std::clamp(static_cast<double>(value), 0.0, 1.0) * p;
     }
-    sum += part;
-    info.termProb = static_cast<float>(t);
+    parts[0] = t;
   }
-  if (variance != nullptr) *variance = sum / static_cast<double>(features_.size() + 2);
+  info.termProb = static_cast<float>(parts[0]);  // 0 when not episodic
+  // The model's own reward: no bonus (a view with bonuses adds them after this).
+  info.reward = info.externalReward;
+  info.varianceReward = info.noveltyReward = info.otherReward = 0.0f;
   info.known = true;
-  return info;
+  if (variance != nullptr) {
+    // D sums in variance()'s order: the features, the reward, the terminal output.
+    double sum = 0.0;
+    for (std::size_t k = 0; k <= d; ++k) sum += parts[1 + k];
+    if (config_->episodic) sum += parts[1 + d + 1];
+    *variance = sum / static_cast<double>(features_.size() + 2);
+  }
+  if (stamp != nullptr) stamp->revisions = revisions_;
 }
 
 double FactoredModel::View::variance(const rl_common::State& input, int action) const {

@@ -552,7 +552,8 @@ const StateActionInfo& UctPlanner::prediction(Record& r, const State& key, int a
       r.predictions.resize(static_cast<std::size_t>(config_.numActions));
     }
     Prediction& p = r.predictions[action];
-    p.info = model_->query(key, action);
+    // Across model versions only what changed is recomputed (the view's refresh()).
+    model_->refresh(key, action, p.info, p.stamp);
     if (p.version == 0) {
       ++r.cached;
       ++cachedPredictions_;

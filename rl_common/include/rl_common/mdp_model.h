@@ -12,6 +12,7 @@
  */
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -102,12 +103,34 @@ inline std::vector<std::pair<State, double>> expandTransitions(const StateAction
   return partial;
 }
 
+/// What a view records with a prediction so that a later view of the same model can tell which
+/// parts of it still hold (see ModelView::refresh()). Opaque to planners; empty: nothing known.
+struct PredictionStamp {
+  std::vector<std::uint64_t> revisions;  ///< per part of the model, the revision it came from
+  std::vector<double> parts;             ///< per part, values the view needs again (variances)
+  void clear() {
+    revisions.clear();
+    parts.clear();
+  }
+};
+
 class ModelView {
  public:
   virtual ~ModelView() = default;
   /// Prediction for taking `action` in `input` (a state, possibly followed by history
   /// features). Thread-safe.
   virtual StateActionInfo query(const State& input, int action) const = 0;
+  /// Makes `info` exactly what query(input, action) returns, where `info` and `stamp` are empty
+  /// or what an earlier refresh() of the same input and action, on this view or on any other
+  /// view, left there. A view of a learned model recomputes only the parts of the model that
+  /// changed since `stamp` (a planner that caches predictions across model versions re-reads
+  /// one forest of a changed tree instead of all of them); this default queries again.
+  /// Thread-safe.
+  virtual void refresh(const State& input, int action, StateActionInfo& info,
+                       PredictionStamp& stamp) const {
+    info = query(input, action);
+    stamp.clear();
+  }
 };
 
 class MDPModel {

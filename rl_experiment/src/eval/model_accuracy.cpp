@@ -77,10 +77,34 @@ ModelAccuracy::ModelAccuracy(const rl_common::TrueModel& truth, int numActions)
     throw std::invalid_argument(
         "ModelAccuracy::ModelAccuracy(): need reachable states and at least one action");
   }
+  const std::size_t pairs = states_.size() * static_cast<std::size_t>(numActions);
+  if (pairs <= kMaxKept) kept_.resize(pairs);
+}
+
+const ModelAccuracy::Kept& ModelAccuracy::measure(const rl_common::ModelView& model,
+                                                  std::size_t state, int action) {
+  Kept& k =
+      kept_.empty()
+          ? scratch_
+          : kept_[state * static_cast<std::size_t>(numActions_) + static_cast<std::size_t>(action)];
+  if (kept_.empty()) k = Kept();  // nothing kept: measure afresh
+  if (k.measured == measurement_) return k;
+  const rl_common::State& s = states_[state];
+  if (!k.truthKnown) {
+    k.truth = nextStateDistribution(truth_.transitions(s, action));
+    k.truthKnown = true;
+  }
+  model.refresh(s, action, k.prediction, k.stamp);
+  k.joint = variationalDistance(k.truth, k.prediction);
+  const std::size_t d = s.size();
+  k.marginal.resize(d);
+  for (std::size_t j = 0; j < d; ++j) k.marginal[j] = marginalDistance(k.truth, k.prediction, j);
+  k.measured = measurement_;
+  return k;
 }
 
 double ModelAccuracy::evaluate(const rl_common::ModelView& model, rl_common::Random& rng,
-                               int samples) const {
+                               int samples) {
   if (samples < 1) {
     throw std::invalid_argument("ModelAccuracy::evaluate(): samples must be >= 1");
   }
@@ -89,7 +113,7 @@ double ModelAccuracy::evaluate(const rl_common::ModelView& model, rl_common::Ran
 
 ModelAccuracy::Report ModelAccuracy::evaluateDetailed(const rl_common::ModelView& model,
                                                       rl_common::Random& rng, int samples,
-                                                      const std::vector<int>& groupBy) const {
+                                                      const std::vector<int>& groupBy) {
   if (samples < 1) {
     throw std::invalid_argument("ModelAccuracy::evaluateDetailed(): samples must be >= 1");
   }
@@ -106,16 +130,17 @@ ModelAccuracy::Report ModelAccuracy::evaluateDetailed(const rl_common::ModelView
   std::vector<double> actionSum(static_cast<std::size_t>(numActions_), 0.0);
   std::vector<int> actionCount(static_cast<std::size_t>(numActions_), 0);
   const int last = static_cast<int>(states_.size()) - 1;
+  ++measurement_;  // every kept measurement is stale now
   for (int i = 0; i < samples; ++i) {
-    const rl_common::State& s = states_[static_cast<std::size_t>(rng.uniformInt(0, last))];
+    const auto index = static_cast<std::size_t>(rng.uniformInt(0, last));
+    const rl_common::State& s = states_[index];
     const int a = rng.uniformInt(0, numActions_ - 1);
-    const StateDistribution truth = nextStateDistribution(truth_.transitions(s, a));
-    const rl_common::StateActionInfo q = model.query(s, a);
-    const double vd = variationalDistance(truth, q);
+    const Kept& k = measure(model, index, a);
+    const double vd = k.joint;
     r.joint += vd;
     actionSum[static_cast<std::size_t>(a)] += vd;
     ++actionCount[static_cast<std::size_t>(a)];
-    for (std::size_t j = 0; j < d; ++j) r.marginal[j] += marginalDistance(truth, q, j);
+    for (std::size_t j = 0; j < d; ++j) r.marginal[j] += k.marginal[j];
     if (!groupBy.empty()) {
       std::string name;
       for (int f : groupBy) {

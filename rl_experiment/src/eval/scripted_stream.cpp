@@ -87,7 +87,7 @@ ScriptedStreamResult measureScriptedStream(const ScriptedStreamConfig& config,
     r.keyOnFloor += keyLight > 0.0f ? 1 : 0;
     agent.seedExperiences({e});
   }
-  const ModelAccuracy measure(truth, LightWorld::kNumActions);
+  ModelAccuracy measure(truth, LightWorld::kNumActions);
   rl_common::Random rng(evalSeed);
   r.distance = measure.evaluate(*agent.learnedModelView(), rng, samples);
   return r;

@@ -73,8 +73,16 @@ class DeferringView : public rl_common::ModelView {
   DeferringView(std::shared_ptr<const rl_common::ModelView> base,
                 std::shared_ptr<const std::vector<OneWaySignature>> signatures);
   rl_common::StateActionInfo query(const rl_common::State& input, int action) const override;
+  /// The base view's refresh() where no one-way step applies; where one does, a query whose
+  /// stamp is cleared (the ended step's info is not the base's, so nothing of it is reused).
+  void refresh(const rl_common::State& input, int action, rl_common::StateActionInfo& info,
+               rl_common::PredictionStamp& stamp) const override;
 
  private:
+  /// The signature that ends (input, action), or null.
+  const OneWaySignature* applying(const rl_common::State& input, int action) const;
+  /// Ends the step: terminal, no reward.
+  static void end(rl_common::StateActionInfo& info);
   std::shared_ptr<const rl_common::ModelView> base_;
   std::shared_ptr<const std::vector<OneWaySignature>> signatures_;
 };

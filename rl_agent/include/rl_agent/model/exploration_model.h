@@ -31,6 +31,11 @@ class ExplorationModel : public rl_common::MDPModel {
   class View : public rl_common::ModelView {
    public:
     rl_common::StateActionInfo query(const rl_common::State& input, int action) const override;
+    /// The model's part through FactoredModel::View::refresh() (only changed forests are
+    /// re-read); the bonuses are applied afresh, as query() does (novelty changes with every
+    /// experience, and a bonus costs a fraction of a forest query).
+    void refresh(const rl_common::State& input, int action, rl_common::StateActionInfo& info,
+                 rl_common::PredictionStamp& stamp) const override;
     const FactoredModel::View& model() const { return *model_; }
     const NoveltyIndex::Snapshot& visited() const { return visited_; }
 

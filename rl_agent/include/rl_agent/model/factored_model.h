@@ -24,6 +24,13 @@
  *
  * view() is cheap: it copies the forests' snapshots (shared, immutable trees).
  *
+ * Each forest carries a revision, drawn from one process-wide counter whenever the forest's
+ * predictions may have changed (a tree rebuilt; with the weighted and best combinations, any
+ * instance, since the trees' accuracies move). A view's refresh() re-reads only the forests
+ * whose revision differs from the prediction's stamp: the trees rebuild on a minority of the
+ * instances, so from one step to the next a planner's cached prediction is mostly still right.
+ * The result is bit for bit what query() returns (the same arithmetic in the same order).
+ *
  * All forests see the same input x, so they share one input table: each x is stored once,
  * the trees keep only row ids into it (the instance storage dominates the agent's memory).
  */
@@ -59,6 +66,15 @@ class FactoredModel : public rl_common::MDPModel {
     /// a planner querying TEXPLORE-VANIR's bonuses needs; the same values as the two calls).
     rl_common::StateActionInfo query(const rl_common::State& input, int action,
                                      double* variance) const;
+    /// Brings `info` up to date with this view (see rl_common::ModelView::refresh()).
+    void refresh(const rl_common::State& input, int action, rl_common::StateActionInfo& info,
+                 rl_common::PredictionStamp& stamp) const override {
+      refresh(input, action, info, &stamp, nullptr);
+    }
+    /// refresh() and, into `*variance` (if not null), variance(), as query(input, action,
+    /// variance) computes them. A null `stamp` recomputes everything (a plain query).
+    void refresh(const rl_common::State& input, int action, rl_common::StateActionInfo& info,
+                 rl_common::PredictionStamp* stamp, double* variance) const;
     /// D(s, a) above, in [0, ~1].
     double variance(const rl_common::State& input, int action) const;
     /// The distribution of feature j's prediction (relative change or absolute
@@ -75,6 +91,7 @@ class FactoredModel : public rl_common::MDPModel {
     std::vector<RandomForest::Snapshot> features_;
     RandomForest::Snapshot reward_;
     RandomForest::Snapshot terminal_;
+    std::vector<std::uint64_t> revisions_;  ///< the features', the reward's, the terminal's
     std::size_t experiences_ = 0;
   };
 
@@ -99,6 +116,8 @@ class FactoredModel : public rl_common::MDPModel {
   std::vector<RandomForest> features_;
   RandomForest reward_;
   RandomForest terminal_;
+  /// Per forest (the features, the reward, the terminal), the revision of its predictions.
+  std::vector<std::uint64_t> revisions_;
   std::size_t experiences_ = 0;
 };
 

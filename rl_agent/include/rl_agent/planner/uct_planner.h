@@ -36,10 +36,11 @@
  *
  * setModel() starts a new model version: each record's counts are capped lazily, when the
  * record is next touched, at N(s,a) ≤ 10 and N(s) ≤ 10·A, and each cached model prediction is
- * re-queried lazily when next used. Unlike the original, memory is bounded, at O(1) cost per
- * step: a new record beyond `maxStates` evicts the least recently visited record (never one on
- * the current rollout), and beyond `maxCachedPredictions` cached predictions, the record whose
- * predictions were used least recently loses them.
+ * refreshed lazily when next used (ModelView::refresh(): a learned model re-reads only its
+ * parts that changed; the values are those of a new query). Unlike the original, memory is bounded,
+ * at O(1) cost per step: a new record beyond `maxStates` evicts the least recently visited record
+ * (never one on the current rollout), and beyond `maxCachedPredictions` cached predictions, the
+ * record whose predictions were used least recently loses them.
  *
  * Deterministic: every random draw comes from the planner's own rl_common::Random, so the same
  * seed, model and calls give the same values and actions. Not thread-safe: callers serialise
@@ -187,7 +188,8 @@ class UctPlanner : public rl_common::Planner {
  private:
   struct Prediction {
     rl_common::StateActionInfo info;
-    std::uint64_t version = 0;  // 0: not cached
+    rl_common::PredictionStamp stamp;  // what the view needs to refresh info
+    std::uint64_t version = 0;         // 0: not cached
   };
   struct Record;
   /// Links of an intrusive doubly-linked list of records (most recent first).
