@@ -71,7 +71,7 @@ TEST(AgentOptions, RmaxDefaults) {
 
 TEST(AgentOptions, OptionsApplyOnlyWhereMeaningful) {
   EXPECT_NE(errorOf({"--agent", "texplore", "--alpha", "0.1"})
-                .find("--alpha applies only to --agent qlearner, sarsa, dyna"),
+                .find("--alpha applies only to --agent dyna, qlearner, sarsa"),
             std::string::npos);
   EXPECT_NE(errorOf({"--agent", "qlearner", "--v", "1"}).find("--v applies only"),
             std::string::npos);

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "rl_common/true_model.h"
+
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -77,3 +79,18 @@ TEST(EnvironmentRegistry, OptionsReachTheEnvironments) {
 }
 
 }  // namespace
+
+// The registry's "true-model" fact is what `--agent optimal` and the model-accuracy measurement
+// are offered: it must hold exactly for the environments that are an rl_common::TrueModel.
+TEST(EnvironmentRegistry, TheTrueModelFactHoldsExactlyForTrueModels) {
+  const auto& reg = rl_env::environmentRegistry();
+  for (const auto& name : reg.names()) {
+    rl_env::EnvironmentOptions o;
+    o.env = name;
+    const auto env = rl_env::makeEnvironment(o);
+    const bool isTrueModel = dynamic_cast<const rl_common::TrueModel*>(env.get()) != nullptr;
+    EXPECT_EQ(reg.hasFact(name, rl_env::kTrueModelFact), isTrueModel) << name;
+  }
+  EXPECT_EQ(rl_env::trueModelEnvironments(), "fourrooms, lightworld, taxi, tworooms");
+  EXPECT_THROW(reg.hasFact("nosuchenv", rl_env::kTrueModelFact), std::invalid_argument);
+}

@@ -319,6 +319,28 @@ TEST(Experiment, ParallelTrialsShareTheCoresBetweenSearchThreads) {
       3);
 }
 
+// --agent optimal on an environment without a true model is refused with the configuration,
+// naming the environments that have one (from the registry's facts).
+TEST(Experiment, OptimalNeedsAnEnvironmentWithATrueModel) {
+  auto finish = [](const std::vector<std::string>& args) {
+    rl_experiment::ExperimentConfig c;
+    rl_common::OptionParser p("experiment", "");
+    rl_experiment::addExperimentOptions(p, &c);
+    p.parse(args);
+    rl_experiment::finishExperimentConfig(p, &c);
+    return c;
+  };
+  EXPECT_NO_THROW(finish({"--agent", "optimal", "--env", "taxi"}));
+  try {
+    finish({"--agent", "optimal", "--env", "mcar"});
+    FAIL() << "accepted --agent optimal --env mcar";
+  } catch (const rl_common::OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find("fourrooms, lightworld, taxi, tworooms"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 namespace {
 
 /// The pids of the processes whose parent is `parent` (from /proc/PID/stat).

@@ -4,6 +4,8 @@
 #include <thread>
 #include <vector>
 
+#include "rl_agent/agent/agent_registry.h"
+#include "rl_agent/reward/explorer_registry.h"
 #include "rl_common/registry.h"
 
 namespace rl_agent {
@@ -160,8 +162,8 @@ void checkStatesPerDim(const AgentOptions& o, std::size_t numFeatures) {
 
 namespace {
 
-const std::vector<std::string> kModelFree = {"qlearner", "sarsa", "dyna"};
-const std::vector<std::string> kModelBased = {"texplore", "modelbased", "rmax"};
+std::vector<std::string> modelFreeAgents() { return agentRegistry().namesWith(kModelFreeFact); }
+std::vector<std::string> modelBasedAgents() { return agentRegistry().namesWith(kModelBasedFact); }
 
 bool isOneOf(const std::string& name, const std::vector<std::string>& names) {
   return std::find(names.begin(), names.end(), name) != names.end();
@@ -206,13 +208,12 @@ void applyAgentDefaults(const rl_common::OptionParser& p, AgentOptions* o) {
 }
 
 void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) {
-  std::vector<std::string> agents = kModelFree;
-  agents.insert(agents.end(), kModelBased.begin(), kModelBased.end());
-  agents.push_back("savedpolicy");
-  requireAgent(p, o, "alpha", kModelFree);
-  requireAgent(p, o, "initialvalue", kModelFree);
+  const std::vector<std::string> modelFreeList = modelFreeAgents();
+  const std::vector<std::string> modelBasedList = modelBasedAgents();
+  requireAgent(p, o, "alpha", modelFreeList);
+  requireAgent(p, o, "initialvalue", modelFreeList);
   requireAgent(p, o, "k", {"dyna"});
-  std::vector<std::string> lambdaAgents = kModelBased;
+  std::vector<std::string> lambdaAgents = modelBasedList;
   lambdaAgents.push_back("sarsa");
   requireAgent(p, o, "lambda", lambdaAgents);
   for (const char* option :
@@ -222,9 +223,9 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
         "taskucbc",     "depth",       "minprob",    "novelty",    "taskplanner",   "taskdepth",
         "taskkey",      "taskminprob", "tasksweeps", "taskrecent", "searchthreads", "defer",
         "deferregions", "taskoutcomes"}) {
-    requireAgent(p, o, option, kModelBased);
+    requireAgent(p, o, option, modelBasedList);
   }
-  const bool modelBased = isOneOf(o.agent, kModelBased);
+  const bool modelBased = isOneOf(o.agent, modelBasedList);
   if (modelBased) {
     const bool searchPlanner = o.planner != "vi" && o.planner != "pi" && o.planner != "sweeping";
     for (const char* option : {"actrate", "lambda", "history", "rollouts", "pathvisits", "ucb",
@@ -274,8 +275,7 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
     if (p.given("tau") && o.explore != "boltzmann") {
       throw rl_common::OptionError("option --tau needs --explore boltzmann");
     }
-    const std::vector<std::string> selectionOnly = {"greedy", "epsilongreedy", "random",
-                                                    "boltzmann"};
+    const std::vector<std::string> selectionOnly = explorerRegistry().namesWith(kSelectionOnlyFact);
     if (o.model == "tabular" && !isOneOf(o.explore, selectionOnly) && o.explore != "unknown") {
       throw rl_common::OptionError("option --explore " + o.explore +
                                    " is not available with --model tabular; valid: " +

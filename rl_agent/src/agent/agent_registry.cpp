@@ -16,62 +16,64 @@ namespace {
 
 AgentRegistry buildRegistry() {
   AgentRegistry reg("agent");
-  reg.add(
-      "qlearner",
-      [](const AgentOptions& o, const rl_common::EnvironmentDescription& d) {
-        QLearner::Config c;
-        c.numActions = d.numActions;
-        c.gamma = o.gamma;
-        c.initialValue = o.initialvalue;
-        c.alpha = o.alpha;
-        c.epsilon = o.epsilon;
-        return std::make_unique<QLearner>(c, o.seed);
-      },
-      "tabular Q-learning, epsilon-greedy (Watkins & Dayan 1992)");
-  reg.add(
-      "sarsa",
-      [](const AgentOptions& o, const rl_common::EnvironmentDescription& d) {
-        Sarsa::Config c;
-        c.numActions = d.numActions;
-        c.gamma = o.gamma;
-        c.initialValue = o.initialvalue;
-        c.alpha = o.alpha;
-        c.epsilon = o.epsilon;
-        c.lambda = o.lambda;
-        return std::make_unique<Sarsa>(c, o.seed);
-      },
-      "tabular Sarsa(lambda), replacing traces decaying by gamma*lambda (Rummery & Niranjan "
-      "1994; Sutton & Barto 2018)");
-  reg.add(
-      "dyna",
-      [](const AgentOptions& o, const rl_common::EnvironmentDescription& d) {
-        Dyna::Config c;
-        c.numActions = d.numActions;
-        c.gamma = o.gamma;
-        c.initialValue = o.initialvalue;
-        c.alpha = o.alpha;
-        c.epsilon = o.epsilon;
-        c.k = o.k;
-        return std::make_unique<Dyna>(c, o.seed);
-      },
-      "Dyna-Q: Q-learning plus --k replayed updates per step (Sutton 1990)");
+  reg.add("qlearner",
+          [](const AgentOptions& o, const rl_common::EnvironmentDescription& d) {
+            QLearner::Config c;
+            c.numActions = d.numActions;
+            c.gamma = o.gamma;
+            c.initialValue = o.initialvalue;
+            c.alpha = o.alpha;
+            c.epsilon = o.epsilon;
+            return std::make_unique<QLearner>(c, o.seed);
+          },
+          "tabular Q-learning, epsilon-greedy (Watkins & Dayan 1992)",
+          {kModelFreeFact, kBinnedStatesFact});
+  reg.add("sarsa",
+          [](const AgentOptions& o, const rl_common::EnvironmentDescription& d) {
+            Sarsa::Config c;
+            c.numActions = d.numActions;
+            c.gamma = o.gamma;
+            c.initialValue = o.initialvalue;
+            c.alpha = o.alpha;
+            c.epsilon = o.epsilon;
+            c.lambda = o.lambda;
+            return std::make_unique<Sarsa>(c, o.seed);
+          },
+          "tabular Sarsa(lambda), replacing traces decaying by gamma*lambda (Rummery & Niranjan "
+          "1994; Sutton & Barto 2018)",
+          {kModelFreeFact, kBinnedStatesFact});
+  reg.add("dyna",
+          [](const AgentOptions& o, const rl_common::EnvironmentDescription& d) {
+            Dyna::Config c;
+            c.numActions = d.numActions;
+            c.gamma = o.gamma;
+            c.initialValue = o.initialvalue;
+            c.alpha = o.alpha;
+            c.epsilon = o.epsilon;
+            c.k = o.k;
+            return std::make_unique<Dyna>(c, o.seed);
+          },
+          "Dyna-Q: Q-learning plus --k replayed updates per step (Sutton 1990)",
+          {kModelFreeFact, kBinnedStatesFact});
   const auto modelBased = [](const AgentOptions& o, const rl_common::EnvironmentDescription& d) {
     return std::make_unique<ModelBasedAgent>(o, d);
   };
   reg.add("texplore", modelBased,
           "TEXPLORE: random-forest model, UCT(lambda) in real time; with --v/--n "
-          "TEXPLORE-VANIR (Hester & Stone 2013, 2017)");
-  reg.add("modelbased", modelBased, "model-based agent with the chosen --model and --planner");
+          "TEXPLORE-VANIR (Hester & Stone 2013, 2017)",
+          {kModelBasedFact});
+  reg.add("modelbased", modelBased, "model-based agent with the chosen --model and --planner",
+          {kModelBasedFact});
   reg.add("rmax", modelBased,
           "R-MAX: tabular model, optimistic for state-actions seen fewer than --m times, value "
-          "iteration (Brafman & Tennenholtz 2002)");
-  reg.add(
-      "savedpolicy",
-      [](const AgentOptions& o, const rl_common::EnvironmentDescription& d) {
-        return std::make_unique<SavedPolicy>(d.numActions, static_cast<int>(d.numFeatures()),
-                                             o.filename, o.seed);
-      },
-      "greedy on the Q-values of a policy file (--filename)");
+          "iteration (Brafman & Tennenholtz 2002)",
+          {kModelBasedFact});
+  reg.add("savedpolicy",
+          [](const AgentOptions& o, const rl_common::EnvironmentDescription& d) {
+            return std::make_unique<SavedPolicy>(d.numActions, static_cast<int>(d.numFeatures()),
+                                                 o.filename, o.seed);
+          },
+          "greedy on the Q-values of a policy file (--filename)", {kBinnedStatesFact});
   reg.add(
       "optimal",
       [](const AgentOptions&,
@@ -79,8 +81,7 @@ AgentRegistry buildRegistry() {
         throw std::invalid_argument(
             "makeAgent(): agent 'optimal' plans on the environment's true model: build it with "
             "that model (the experiment runner passes its environment; the agent node builds "
-            "its own copy from --env), for environments with a true model (lightworld, taxi, "
-            "tworooms, fourrooms)");
+            "its own copy from --env), for environments with a true model");
       },
       "value iteration on the environment's true model (the paper's optimal policy)");
   return reg;
@@ -91,9 +92,7 @@ std::unique_ptr<rl_common::Agent> wrap(std::unique_ptr<rl_common::Agent> agent,
                                        const rl_common::EnvironmentDescription& d) {
   // Model-free agents and savedpolicy see binned states (the original's DiscretizationAgent);
   // the model-based agent bins its own inputs (except for m5tree).
-  const bool modelFree =
-      o.agent == "qlearner" || o.agent == "sarsa" || o.agent == "dyna" || o.agent == "savedpolicy";
-  if (!binsStates(o) || !modelFree) return agent;
+  if (!binsStates(o) || !agentRegistry().hasFact(o.agent, kBinnedStatesFact)) return agent;
   checkStatesPerDim(o, d.minFeatures.size());
   return std::make_unique<DiscretizationAgent>(std::move(agent), o.nstates, d.minFeatures,
                                                d.maxFeatures);
@@ -120,7 +119,7 @@ std::unique_ptr<rl_common::Agent> makeAgent(const AgentOptions& options,
   if (trueModel == nullptr) {
     throw std::invalid_argument(
         "makeAgent(): agent 'optimal' needs the environment's true model, and this "
-        "environment offers none (valid: lightworld, taxi, tworooms, fourrooms)");
+        "environment offers none");
   }
   OptimalAgent::Config c;
   c.numActions = description.numActions;

@@ -27,8 +27,7 @@ bool isUct(const std::string& planner) {
 
 /// Explorers that only change how actions are chosen (no bonus): every model serves them.
 bool selectionOnly(const std::string& explore) {
-  return explore == "greedy" || explore == "epsilongreedy" || explore == "random" ||
-         explore == "boltzmann";
+  return explorerRegistry().hasFact(explore, kSelectionOnlyFact);
 }
 
 bool isRealTimeUct(const std::string& planner) {

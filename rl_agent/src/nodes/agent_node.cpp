@@ -25,8 +25,14 @@
 
 namespace {
 
-const char* const kTrueModelEnvs = "lightworld, taxi, tworooms, fourrooms";
-const char* const kTrueModelChoice = "lightworld|taxi|tworooms|fourrooms";
+/// The environments with a true model as "a|b|c".
+std::string trueModelChoice() {
+  std::string out;
+  for (const auto& n : rl_env::environmentRegistry().namesWith(rl_env::kTrueModelFact)) {
+    out += (out.empty() ? "" : "|") + n;
+  }
+  return out;
+}
 
 /// The true-model environment of `optimal`, or null for every other agent. Throws
 /// rl_common::OptionError if --env (or an environment option) is missing, misplaced or invalid.
@@ -44,7 +50,7 @@ std::unique_ptr<rl_common::Environment> trueModelEnvironment(
         throw rl_common::OptionError(
             "option --" + spec.name + " applies only to --agent optimal, which plans on its own " +
             "copy of the env node's environment: agent --agent optimal --env {" +
-            std::string(kTrueModelChoice) + "} [--seed S] [the env node's options, e.g. " +
+            trueModelChoice() + "} [--seed S] [the env node's options, e.g. " +
             "--deterministic]; every other agent learns from the env node's messages alone");
       }
     }
@@ -53,7 +59,7 @@ std::unique_ptr<rl_common::Environment> trueModelEnvironment(
   if (!parser.given("env")) {
     throw rl_common::OptionError(
         "--agent optimal needs --env <name>: the env node's environment (one of " +
-        std::string(kTrueModelEnvs) + "), with the env node's options (e.g. --deterministic)");
+        rl_env::trueModelEnvironments() + "), with the env node's options (e.g. --deterministic)");
   }
   rl_env::checkEnvironmentOptions(parser, envOptions);
   try {
@@ -64,9 +70,9 @@ std::unique_ptr<rl_common::Environment> trueModelEnvironment(
   envOptions.seed = options.seed;  // never stepped: only its dynamics are used
   auto env = rl_env::makeEnvironment(envOptions);
   if (dynamic_cast<const rl_common::TrueModel*>(env.get()) == nullptr) {
-    throw rl_common::OptionError(
-        "option --env: '" + envOptions.env +
-        "' offers no true model for --agent optimal (valid: " + kTrueModelEnvs + ")");
+    throw rl_common::OptionError("option --env: '" + envOptions.env +
+                                 "' offers no true model for --agent optimal (valid: " +
+                                 rl_env::trueModelEnvironments() + ")");
   }
   return env;
 }
@@ -103,8 +109,8 @@ int main(int argc, char** argv) {
   parser.value("seed", &options.seed, "seed of the agent's random source");
   parser.value("env", &envOptions.env,
                "--agent optimal only: the env node's environment, built privately as the true "
-               "model to plan on (lightworld, taxi, tworooms, fourrooms); give the env node's "
-               "options too");
+               "model to plan on (" +
+                   rl_env::trueModelEnvironments() + "); give the env node's options too");
   rl_env::addEnvironmentVariantOptions(parser, &envOptions);
   rl_agent::JournalSettings journal;
   parser.value("journal", &journal.journal,

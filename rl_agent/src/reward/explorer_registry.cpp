@@ -16,17 +16,15 @@ namespace {
 
 ExplorerRegistry build() {
   ExplorerRegistry reg("explore type");
-  reg.add(
-      "greedy", [](const ExplorerSettings&) { return std::make_unique<Explorer>(); },
-      "external reward only");
-  reg.add(
-      "epsilongreedy",
-      [](const ExplorerSettings&) {
-        auto e = std::make_unique<Explorer>();
-        e->epsilonGreedy = true;
-        return e;
-      },
-      "random action with probability epsilon");
+  reg.add("greedy", [](const ExplorerSettings&) { return std::make_unique<Explorer>(); },
+          "external reward only", {kSelectionOnlyFact});
+  reg.add("epsilongreedy",
+          [](const ExplorerSettings&) {
+            auto e = std::make_unique<Explorer>();
+            e->epsilonGreedy = true;
+            return e;
+          },
+          "random action with probability epsilon", {kSelectionOnlyFact});
   reg.add(
       "variancenovelty",
       [](const ExplorerSettings& s) {
@@ -61,25 +59,23 @@ ExplorerRegistry build() {
         return e;
       },
       "bonus n for untried state-actions");
-  reg.add(
-      "random",
-      [](const ExplorerSettings&) {
-        auto e = std::make_unique<Explorer>();
-        e->randomActions = true;
-        return e;
-      },
-      "uniformly random actions (the paper's random agent)");
-  reg.add(
-      "boltzmann",
-      [](const ExplorerSettings& s) {
-        if (!(s.tau > 0.0f))
-          throw std::invalid_argument("explorerRegistry(): boltzmann needs tau > 0");
-        auto e = std::make_unique<Explorer>();
-        e->boltzmann = true;
-        e->tau = s.tau;
-        return e;
-      },
-      "softmax action selection with temperature tau");
+  reg.add("random",
+          [](const ExplorerSettings&) {
+            auto e = std::make_unique<Explorer>();
+            e->randomActions = true;
+            return e;
+          },
+          "uniformly random actions (the paper's random agent)", {kSelectionOnlyFact});
+  reg.add("boltzmann",
+          [](const ExplorerSettings& s) {
+            if (!(s.tau > 0.0f))
+              throw std::invalid_argument("explorerRegistry(): boltzmann needs tau > 0");
+            auto e = std::make_unique<Explorer>();
+            e->boltzmann = true;
+            e->tau = s.tau;
+            return e;
+          },
+          "softmax action selection with temperature tau", {kSelectionOnlyFact});
   const auto regionExplorer = [](RegionErrorReward::Kind kind) {
     return [kind](const ExplorerSettings& s) {
       auto regions = std::make_shared<const RandomRegions>(s.featMin, s.featMax, s.regions, s.seed);

@@ -112,8 +112,8 @@ AgentNode::AgentNode(ros::NodeHandle nh, const AgentOptions& options,
     trueModel_ = dynamic_cast<const rl_common::TrueModel*>(trueModelEnv_.get());
     if (trueModel_ == nullptr) {
       throw std::invalid_argument("AgentNode::AgentNode(): environment '" + trueModelEnv_->name() +
-                                  "' has no true model (valid: lightworld, taxi, tworooms, "
-                                  "fourrooms)");
+                                  "' is not an rl_common::TrueModel (the env registry's "
+                                  "'true-model' fact lists those that are)");
     }
   }
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();

@@ -5,6 +5,10 @@
  * Names are the original package's option values; aliases map other accepted spellings
  * (e.g. "parallel-uct" and "realtimeuct") to one canonical name. Asking for an unknown name is
  * an error whose message lists every valid name, so a command line can print it as is.
+ *
+ * An entry also carries facts about its component (short tags such as an environment's
+ * "true-model"), so that a list of the components with a property is read from the registry
+ * instead of being written out again wherever it is needed.
  */
 #pragma once
 
@@ -36,8 +40,10 @@ class Registry {
   /// `kind` names the component kind in messages, e.g. "environment".
   explicit Registry(std::string kind) : kind_(std::move(kind)) {}
 
-  /// Adds a factory under a canonical name. Throws if the name is taken.
-  Registry& add(const std::string& name, Factory factory, std::string description = {}) {
+  /// Adds a factory under a canonical name, with the facts that hold for its product. Throws
+  /// if the name is taken.
+  Registry& add(const std::string& name, Factory factory, std::string description = {},
+                std::vector<std::string> facts = {}) {
     if (factory == nullptr) {
       throw std::invalid_argument("Registry::add(): null factory for " + kind_ + " '" + name + "'");
     }
@@ -45,7 +51,7 @@ class Registry {
       throw std::invalid_argument("Registry::add(): " + kind_ + " '" + name +
                                   "' is already registered");
     }
-    entries_.emplace(name, Entry{std::move(factory), std::move(description)});
+    entries_.emplace(name, Entry{std::move(factory), std::move(description), std::move(facts)});
     return *this;
   }
 
@@ -100,12 +106,27 @@ class Registry {
     return entries_.at(canonical(name)).description;
   }
 
+  /// True if `fact` was registered for `name` (a canonical name or an alias). Throws if the
+  /// name is unknown.
+  bool hasFact(const std::string& name, const std::string& fact) const {
+    const auto& facts = entries_.at(canonical(name)).facts;
+    return std::find(facts.begin(), facts.end(), fact) != facts.end();
+  }
+  /// Canonical names whose entry has `fact`, sorted.
+  std::vector<std::string> namesWith(const std::string& fact) const {
+    std::vector<std::string> out;
+    for (const auto& e : entries_) {
+      if (hasFact(e.first, fact)) out.push_back(e.first);
+    }
+    return out;
+  }
   const std::string& kind() const { return kind_; }
 
  private:
   struct Entry {
     Factory factory;
     std::string description;
+    std::vector<std::string> facts;
   };
 
   std::string unknownMessage(const std::string& name) const {

@@ -22,24 +22,24 @@ using Ptr = std::unique_ptr<rl_common::Environment>;
 
 EnvironmentRegistry makeRegistry() {
   EnvironmentRegistry r("environment");
-  r.add(
-      "taxi",
-      [](Options o, std::uint64_t seed) -> Ptr {
-        return std::make_unique<Taxi>(seed, o.stochastic);
-      },
-      "Dietterich's 5x5 taxi: pick the passenger up and put them down at the destination");
-  r.add(
-      "tworooms",
-      [](Options o, std::uint64_t seed) -> Ptr {
-        return std::make_unique<TwoRooms>(seed, o.stochastic, o.delay);
-      },
-      "5x11 two-room gridworld with a doorway; --delay k delays actions by k steps");
-  r.add(
-      "fourrooms",
-      [](Options o, std::uint64_t seed) -> Ptr {
-        return std::make_unique<FourRooms>(seed, o.stochastic);
-      },
-      "Sutton, Precup & Singh's 11x11 four-room gridworld, goal in the south-east room");
+  r.add("taxi",
+        [](Options o, std::uint64_t seed) -> Ptr {
+          return std::make_unique<Taxi>(seed, o.stochastic);
+        },
+        "Dietterich's 5x5 taxi: pick the passenger up and put them down at the destination",
+        {kTrueModelFact});
+  r.add("tworooms",
+        [](Options o, std::uint64_t seed) -> Ptr {
+          return std::make_unique<TwoRooms>(seed, o.stochastic, o.delay);
+        },
+        "5x11 two-room gridworld with a doorway; --delay k delays actions by k steps",
+        {kTrueModelFact});
+  r.add("fourrooms",
+        [](Options o, std::uint64_t seed) -> Ptr {
+          return std::make_unique<FourRooms>(seed, o.stochastic);
+        },
+        "Sutton, Precup & Singh's 11x11 four-room gridworld, goal in the south-east room",
+        {kTrueModelFact});
   r.add(
       "energy",
       [](Options o, std::uint64_t seed) -> Ptr {
@@ -88,12 +88,12 @@ EnvironmentRegistry makeRegistry() {
         return std::make_unique<Stocks>(seed, o.stochastic, o.nsectors, o.nstocks);
       },
       "factored stock trading (Strehl et al. 2007); --nsectors, --nstocks");
-  r.add(
-      "lightworld",
-      [](Options o, std::uint64_t seed) -> Ptr {
-        return std::make_unique<LightWorld>(seed, o.stochastic);
-      },
-      "the TEXPLORE-VANIR paper's 4-room key/lock/door world with light sensors");
+  r.add("lightworld",
+        [](Options o, std::uint64_t seed) -> Ptr {
+          return std::make_unique<LightWorld>(seed, o.stochastic);
+        },
+        "the TEXPLORE-VANIR paper's 4-room key/lock/door world with light sensors",
+        {kTrueModelFact});
   r.add(
       "naoarm",
       [](Options o, std::uint64_t seed) -> Ptr {
@@ -112,6 +112,10 @@ EnvironmentRegistry makeRegistry() {
 const EnvironmentRegistry& environmentRegistry() {
   static const EnvironmentRegistry registry = makeRegistry();
   return registry;
+}
+
+std::string trueModelEnvironments() {
+  return rl_common::joinNames(environmentRegistry().namesWith(kTrueModelFact));
 }
 
 std::unique_ptr<rl_common::Environment> makeEnvironment(const EnvironmentOptions& options) {

@@ -102,6 +102,12 @@ void finishExperimentConfig(const rl_common::OptionParser& p, ExperimentConfig* 
   } catch (const std::invalid_argument& e) {
     throw rl_common::OptionError(std::string("option --agent: ") + e.what());
   }
+  if (c->agent.agent == "optimal" &&
+      !rl_env::environmentRegistry().hasFact(c->env.env, rl_env::kTrueModelFact)) {
+    throw rl_common::OptionError("--agent optimal plans on the environment's true model; --env " +
+                                 c->env.env +
+                                 " has none (valid: " + rl_env::trueModelEnvironments() + ")");
+  }
   rl_agent::applyAgentDefaults(p, &c->agent);
   rl_agent::checkAgentOptions(p, c->agent);
   // Parallel trials share the cores: each real-time agent plans with its share of them unless

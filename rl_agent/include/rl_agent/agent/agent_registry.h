@@ -18,6 +18,13 @@
 
 namespace rl_agent {
 
+/// Facts of the registry's entries: tabular learners without a model (their options --alpha,
+/// --initialvalue), model-based agents (the model, planner and exploration options), and the
+/// agents that see --nstates-binned states through a DiscretizationAgent.
+inline constexpr const char* kModelFreeFact = "model-free";
+inline constexpr const char* kModelBasedFact = "model-based";
+inline constexpr const char* kBinnedStatesFact = "binned-states";
+
 /// Factories take the options (including the seed) and the task description.
 using AgentRegistry = rl_common::Registry<rl_common::Agent, const AgentOptions&,
                                           const rl_common::EnvironmentDescription&>;

@@ -61,6 +61,10 @@ struct Explorer {
 /// floor for 300 steps learns most (docs/science/lightworld-curiosity.md §2.1).
 constexpr long kVanirDeferSteps = 300;
 
+/// The fact of the explorers that add no bonus and only change how actions are chosen
+/// (greedy, epsilongreedy, random, boltzmann): every model serves them.
+inline constexpr const char* kSelectionOnlyFact = "selection-only";
+
 using ExplorerRegistry = rl_common::Registry<Explorer, const ExplorerSettings&>;
 
 const ExplorerRegistry& explorerRegistry();
