@@ -300,15 +300,22 @@ TEST(ReproduceScript, TaskPlannerViGoesToTheExploreTaskRunsOnly) {
       << text;
 }
 
+namespace {
+
+/// The runner's configuration from a command line, as experiment's main() finishes it.
+rl_experiment::ExperimentConfig finishedConfig(const std::vector<std::string>& args) {
+  rl_experiment::ExperimentConfig c;
+  rl_common::OptionParser p("experiment", "");
+  rl_experiment::addExperimentOptions(p, &c);
+  p.parse(args);
+  rl_experiment::finishExperimentConfig(p, &c);
+  return c;
+}
+
+}  // namespace
+
 TEST(Experiment, ParallelTrialsShareTheCoresBetweenSearchThreads) {
-  auto config = [](const std::vector<std::string>& args) {
-    rl_experiment::ExperimentConfig c;
-    rl_common::OptionParser p("experiment", "");
-    rl_experiment::addExperimentOptions(p, &c);
-    p.parse(args);
-    rl_experiment::finishExperimentConfig(p, &c);
-    return c;
-  };
+  const auto config = finishedConfig;
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   EXPECT_EQ(config({"--agent", "texplore"}).agent.searchthreads, 0);  // one per core
   EXPECT_EQ(config({"--agent", "texplore", "--jobs", "2"}).agent.searchthreads,
@@ -322,14 +329,7 @@ TEST(Experiment, ParallelTrialsShareTheCoresBetweenSearchThreads) {
 // --agent optimal on an environment without a true model is refused with the configuration,
 // naming the environments that have one (from the registry's facts).
 TEST(Experiment, OptimalNeedsAnEnvironmentWithATrueModel) {
-  auto finish = [](const std::vector<std::string>& args) {
-    rl_experiment::ExperimentConfig c;
-    rl_common::OptionParser p("experiment", "");
-    rl_experiment::addExperimentOptions(p, &c);
-    p.parse(args);
-    rl_experiment::finishExperimentConfig(p, &c);
-    return c;
-  };
+  const auto finish = finishedConfig;
   EXPECT_NO_THROW(finish({"--agent", "optimal", "--env", "taxi"}));
   try {
     finish({"--agent", "optimal", "--env", "mcar"});
