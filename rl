@@ -27,7 +27,7 @@ APT_PACKAGES=(
   libboost-program-options-dev libgtest-dev libgmock-dev libbenchmark-dev
   libeigen3-dev libnanoflann-dev liburdfdom-dev liburdf-dev libopencv-dev
   libcv-bridge-dev liburdfdom-tools python3-sensor-msgs
-  python3-matplotlib python3-numpy
+  python3-matplotlib python3-numpy python3-rosbag
 )
 
 log() { printf '\033[1m[rl]\033[0m %s\n' "$*" >&2; }

@@ -3,12 +3,14 @@
 nao_arm_exploration.launch): waits until the experiment node reports that it finished, then
 asserts that the run folder holds the expected logs and that actions and rewards flowed
 (rl_agent/rl_action, rl_agent/rl_reward_breakdown). Parameters: ~out, ~steps, ~trials,
-~num_actions (the environment's), ~seed (the run seed), ~timeout (seconds)."""
+~num_actions (the environment's), ~seed (the run seed), ~timeout (seconds), ~bag (with
+record:=true: the recording, whose recorder must be subscribed to ~recorded topics)."""
 import csv
 import struct
 import os
 import unittest
 
+import rosgraph.masterapi
 import rospy
 import rostest
 from rl_msgs.msg import RLAction, RLRewardBreakdown
@@ -61,6 +63,17 @@ class Experiment(unittest.TestCase):
         self.assertGreater(len(self.actions), 0)
         self.assertGreater(len(self.breakdowns), 0)
         self.assertTrue(all(0 <= a < num_actions for a in self.actions))
+        # record:=true: a rosbag recorder subscribed to the rl topics, writing the bag (still
+        # ".active" while the launch runs).
+        bag = rospy.get_param("~bag", "")
+        if bag:
+            state = rosgraph.masterapi.Master("/check_experiment").getSystemState()
+            subscribers = {topic: nodes for topic, nodes in state[1]}
+            for topic in rospy.get_param("~recorded").split():
+                self.assertIn("/record", subscribers.get(topic, []),
+                              "%s is not recorded: %s" % (topic, subscribers.get(topic)))
+            self.assertTrue(os.path.exists(bag) or os.path.exists(bag + ".active"),
+                            "no bag at %s" % bag)
         # The launch file's agent journal: a header, then the original's record layout with
         # one record per step the agent learned from (a trial's first state teaches nothing).
         journal = rospy.get_param("~journal", "")
