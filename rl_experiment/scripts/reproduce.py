@@ -31,6 +31,7 @@ in the ablation texplore-v1-n3).
 A rerun resumes: finished trials are kept (use a new --out for a fresh run).
 """
 import argparse
+import csv
 import os
 import shutil
 import subprocess
@@ -147,6 +148,15 @@ def finished_trials(folder):
         return max(0, sum(1 for line in f if line.strip()) - 1)
 
 
+def trial_seconds(folder):
+    """Seconds of the finished trials in a run folder (trials.csv), each as its trial took them."""
+    path = os.path.join(folder, "trials.csv")
+    if not os.path.exists(path):
+        return 0.0
+    with open(path) as f:
+        return sum(float(r["seconds"]) for r in csv.DictReader(f) if r.get("seconds"))
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0],
                                  formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -229,6 +239,7 @@ def main(argv=None):
          ablation_variants(rollouts, planner_opts), ["--steps", str(ablation)], "texplore-v1-n3"),
     ]
     wanted = set(args.experiment or [e[0] for e in experiments])
+    total_trial_seconds = 0.0  # every finished trial's own time, this run and resumed ones
     tables = []
     failures = 0
     # Each experiment's table gives p-values against TEXPLORE-VANIR (`reference`); if its runs
@@ -276,13 +287,16 @@ def main(argv=None):
         with open(os.path.join(figs, "results.md")) as f:
             table = f.read().split("\n", 1)[1]
         tables.append("## %s\n\n%s\n%s" % (name, what, table))
+        total_trial_seconds += sum(trial_seconds(f) for f in folders)
         log("  figures in %s" % figs)
     elapsed = time.time() - start
     md = ["# LightWorld reproduction%s" % (" (quick)" if args.quick else ""), "",
           "%d trials per agent, %d UCT rollouts per step, UCT lambda %s, task rewards %s at the "
-          "switch, task planner %s, seed %d; run time %.1f min on %d jobs." %
+          "switch, task planner %s, seed %d; this invocation ran %.1f min on %d jobs; the "
+          "trials took %.1f h between them (summed over trials, including those of earlier, "
+          "resumed invocations)." %
           (trials, rollouts, repr(args.lam), args.task_rewards, args.task_planner, args.seed,
-           elapsed / 60, args.jobs), "",
+           elapsed / 60, args.jobs, total_trial_seconds / 3600), "",
           "TEXPLORE-VANIR puts off one-way steps while exploring (the suite's default, "
           "--defer 300; the original's behaviour is --defer 0).", "",
           "For reference, the paper's optimal policy earns %.1f over the 3000 task steps." %
