@@ -42,28 +42,23 @@ std::shared_ptr<const ExplorationModel::View> ExplorationModel::explorationView(
 rl_common::StateActionInfo ExplorationModel::View::query(const rl_common::State& input,
                                                          int action) const {
   rl_common::StateActionInfo info;
-  if (rewards_ == nullptr) {
-    model_->refresh(input, action, info, nullptr, nullptr);
-    return info;
-  }
-  const bool needVariance = needsVariance_;  // decided once per view, not per query
-  double variance = 0.0;
-  model_->refresh(input, action, info, nullptr, needVariance ? &variance : nullptr);
-  const BonusContext context{*model_, visited_, input, action, needVariance ? &variance : nullptr};
-  for (const auto& r : *rewards_) r->apply(context, &info);
+  fill(input, action, info, nullptr);
   return info;
 }
 
 void ExplorationModel::View::refresh(const rl_common::State& input, int action,
                                      rl_common::StateActionInfo& info,
                                      rl_common::PredictionStamp& stamp) const {
-  if (rewards_ == nullptr) {
-    model_->refresh(input, action, info, &stamp, nullptr);
-    return;
-  }
-  const bool needVariance = needsVariance_;
+  fill(input, action, info, &stamp);
+}
+
+void ExplorationModel::View::fill(const rl_common::State& input, int action,
+                                  rl_common::StateActionInfo& info,
+                                  rl_common::PredictionStamp* stamp) const {
+  const bool needVariance = rewards_ != nullptr && needsVariance_;  // decided once per view
   double variance = 0.0;
-  model_->refresh(input, action, info, &stamp, needVariance ? &variance : nullptr);
+  model_->refresh(input, action, info, stamp, needVariance ? &variance : nullptr);
+  if (rewards_ == nullptr) return;
   const BonusContext context{*model_, visited_, input, action, needVariance ? &variance : nullptr};
   for (const auto& r : *rewards_) r->apply(context, &info);
 }

@@ -25,15 +25,6 @@
 
 namespace {
 
-/// The environments with a true model as "a|b|c".
-std::string trueModelChoice() {
-  std::string out;
-  for (const auto& n : rl_env::environmentRegistry().namesWith(rl_env::kTrueModelFact)) {
-    out += (out.empty() ? "" : "|") + n;
-  }
-  return out;
-}
-
 /// The true-model environment of `optimal`, or null for every other agent. Throws
 /// rl_common::OptionError if --env (or an environment option) is missing, misplaced or invalid.
 std::unique_ptr<rl_common::Environment> trueModelEnvironment(
@@ -50,7 +41,7 @@ std::unique_ptr<rl_common::Environment> trueModelEnvironment(
         throw rl_common::OptionError(
             "option --" + spec.name + " applies only to --agent optimal, which plans on its own " +
             "copy of the env node's environment: agent --agent optimal --env {" +
-            trueModelChoice() + "} [--seed S] [the env node's options, e.g. " +
+            rl_common::joinNames(rl_env::environmentRegistry().namesWith(rl_env::kTrueModelFact), "|") + "} [--seed S] [the env node's options, e.g. " +
             "--deterministic]; every other agent learns from the env node's messages alone");
       }
     }

@@ -23,11 +23,13 @@
 
 namespace rl_common {
 
-/// Joins names as "a, b, c" for error messages and help texts.
-inline std::string joinNames(const std::vector<std::string>& names) {
+/// Joins names as "a, b, c" (or with another separator, e.g. "a|b|c") for error messages and
+/// help texts.
+inline std::string joinNames(const std::vector<std::string>& names,
+                             const std::string& separator = ", ") {
   std::string out;
   for (const auto& n : names) {
-    out += (out.empty() ? "" : ", ") + n;
+    out += (out.empty() ? "" : separator) + n;
   }
   return out;
 }
@@ -115,8 +117,10 @@ class Registry {
   /// Canonical names whose entry has `fact`, sorted.
   std::vector<std::string> namesWith(const std::string& fact) const {
     std::vector<std::string> out;
-    for (const auto& e : entries_) {
-      if (hasFact(e.first, fact)) out.push_back(e.first);
+    for (const auto& [name, entry] : entries_) {
+      if (std::find(entry.facts.begin(), entry.facts.end(), fact) != entry.facts.end()) {
+        out.push_back(name);
+      }
     }
     return out;
   }

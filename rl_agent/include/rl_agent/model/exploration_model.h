@@ -41,6 +41,9 @@ class ExplorationModel : public rl_common::MDPModel {
 
    private:
     friend class ExplorationModel;
+    /// query() (null stamp) and refresh(): the model's part, then the bonuses.
+    void fill(const rl_common::State& input, int action, rl_common::StateActionInfo& info,
+              rl_common::PredictionStamp* stamp) const;
     std::shared_ptr<const FactoredModel::View> model_;
     NoveltyIndex::Snapshot visited_;
     std::shared_ptr<const Rewards> rewards_;  ///< null when intrinsic rewards are off
