@@ -41,7 +41,9 @@ std::unique_ptr<rl_common::Environment> trueModelEnvironment(
         throw rl_common::OptionError(
             "option --" + spec.name + " applies only to --agent optimal, which plans on its own " +
             "copy of the env node's environment: agent --agent optimal --env {" +
-            rl_common::joinNames(rl_env::environmentRegistry().namesWith(rl_env::kTrueModelFact), "|") + "} [--seed S] [the env node's options, e.g. " +
+            rl_common::joinNames(rl_env::environmentRegistry().namesWith(rl_env::kTrueModelFact),
+                                 "|") +
+            "} [--seed S] [the env node's options, e.g. " +
             "--deterministic]; every other agent learns from the env node's messages alone");
       }
     }
