@@ -2,7 +2,8 @@
 """The TEXPLORE-VANIR paper's LightWorld experiments (section 5.1, Figs. 4-8), in one command.
 
 Usage: reproduce.py lightworld [--quick] [--out DIR] [--trials N] [--jobs K] [--seed S]
-                               [--rollouts R] [--experiment NAME ...] [--lambda L]
+                               [--rollouts R] [--experiment NAME ...] [--agent LABEL ...]
+                               [--lambda L]
                                [--task-rewards given|learned] [--task-planner vi|same] [--list]
 
 Experiments (each agent runs --trials trials through the standalone `experiment` runner):
@@ -24,8 +25,10 @@ the learned model over LightWorld's position, key, door and room (--task-planner
 default: UCT with 100 rollouts does not plan key, lock and door); --task-planner same plans it
 as they explored (UCT for TEXPLORE, the paper's setting; see the README's task-phase section).
 --quick uses 4 trials and shorter runs (8 minutes on 2 cores). The full run (30 trials, the
-paper's lengths) is estimated at 3-5 hours on 2 cores (not yet measured). Writes run folders,
-figures (PNG, PDF) per experiment and DIR/results.md with the final numbers, 95% intervals and
+paper's lengths) took 7.8 h of trial CPU on 2 cores (2026-12-03, docs/results/lightworld/).
+Writes run folders, figures (PNG, PDF) and figures/per-trial.csv (every trial's summary and its model distance at
+step 1000, trials_table.py: small enough to commit) per experiment, and DIR/results.md with
+the final numbers, 95% intervals and
 p-values (two-sided Welch t-tests of the per-trial values against TEXPLORE-VANIR: texplore-vanir,
 in the ablation texplore-v1-n3).
 A rerun resumes: finished trials are kept (use a new --out for a fresh run).
@@ -186,6 +189,9 @@ def main(argv=None):
                          "and room features (vi, default: --taskplanner vi --taskkey %s) or as "
                          "they explored (same: UCT for TEXPLORE, the paper's setting)"
                          % LIGHTWORLD_TASK_KEY)
+    ap.add_argument("--agent", action="append", metavar="LABEL",
+                    help="run only these agents (labels as --list prints them; e.g. to add "
+                         "trials of some agents to a finished run's --out)")
     ap.add_argument("--list", action="store_true",
                     help="print each experiment's agents and their options, then exit")
     args = ap.parse_args(argv)
@@ -213,6 +219,16 @@ def main(argv=None):
         for label, opts in ablation_variants(rollouts, planner_opts):
             print("ablation: %-20s %s" % (label, " ".join(opts)))
         return 0
+    if args.agent:
+        # Checked before anything is written: a typo must not start a run folder.
+        known = {label for label, _ in agent_variants(exe, rollouts, lambda text: None,
+                                                      planner_opts)}
+        known |= {label for label, _ in ablation_variants(rollouts, planner_opts)}
+        unknown = [a for a in args.agent if a not in known]
+        if unknown:
+            print("reproduce.py: unknown --agent %s; the agents: %s"
+                  % (", ".join(unknown), ", ".join(sorted(known))), file=sys.stderr)
+            return 2
     os.makedirs(out, exist_ok=True)
     start = time.time()
     logf = open(os.path.join(out, "reproduce.log"), "a")
@@ -239,6 +255,9 @@ def main(argv=None):
          ablation_variants(rollouts, planner_opts), ["--steps", str(ablation)], "texplore-v1-n3"),
     ]
     wanted = set(args.experiment or [e[0] for e in experiments])
+    if args.agent:
+        experiments = [(n, w, [v for v in variants if v[0] in args.agent], o, r)
+                       for n, w, variants, o, r in experiments]
     total_trial_seconds = 0.0  # every finished trial's own time, this run and resumed ones
     tables = []
     failures = 0
@@ -284,6 +303,15 @@ def main(argv=None):
             failures += 1
             log("  figures FAILED:\n" + res.stdout)
             continue
+        # Every trial's numbers in one small file beside the figures: the run folders' steps
+        # files are too large to keep, and this is what plot_trials.py draws from.
+        res = subprocess.run([sys.executable, os.path.join(HERE, "trials_table.py"), "--out",
+                              os.path.join(figs, "per-trial.csv"), "--at-step", str(explore)]
+                             + folders, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                             text=True)
+        if res.returncode != 0:
+            failures += 1
+            log("  per-trial table FAILED:\n" + res.stdout)
         with open(os.path.join(figs, "results.md")) as f:
             table = f.read().split("\n", 1)[1]
         tables.append("## %s\n\n%s\n%s" % (name, what, table))

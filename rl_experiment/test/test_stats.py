@@ -22,6 +22,8 @@ SCRIPTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "script
 sys.path.insert(0, os.path.abspath(SCRIPTS))
 import stats  # noqa: E402
 import plot_results  # noqa: E402
+import plot_trials  # noqa: E402
+import trials_table  # noqa: E402
 import diagnose_exploration  # noqa: E402
 
 
@@ -297,6 +299,112 @@ class FloorAdjusted(unittest.TestCase):
         a = self.folder("a", [(10, 0.5), (20, 0.4)])
         b = self.folder("b", [(10, 0.5), (30, 0.4)])
         self.assertIsNone(diagnose_exploration.floor_adjusted(a, b))
+
+
+class PlotTrials(unittest.TestCase):
+    """plot_trials.py on a fabricated per-trial CSV: sums, ratios, empty cells, p, errors."""
+
+    HEADER = ["agent", "trial", "distance", "hits", "misses"]
+    ROWS = [["texplore-vanir", 0, 0.2, 3, 1], ["texplore-vanir", 1, 0.3, 1, 1],
+            ["texplore-vanir", 2, 0.25, 2, 2], ["other", 0, 0.5, 0, 4], ["other", 1, "", 1, 3],
+            ["other", 2, 0.6, 0, 0]]
+
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp(prefix="rl_test_plot_trials_")
+        self.csv = os.path.join(self.tmp, "trials.csv")
+        write_csv(self.csv, self.HEADER, self.ROWS)
+        self.out = os.path.join(self.tmp, "figs")
+
+    def tearDown(self):
+        shutil.rmtree(self.tmp)
+
+    def run_main(self, *args):
+        out, err = io.StringIO(), io.StringIO()
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            code = plot_trials.main([self.csv, "--out", self.out] + list(args))
+        return code, out.getvalue(), err.getvalue()
+
+    def test_figures_and_table(self):
+        code, out, _ = self.run_main("--agents", "other,texplore-vanir", "--column",
+                                     "distance=distance", "--column", "share=hits/hits+misses")
+        self.assertEqual(code, 0)
+        for name in ("distance.png", "distance.pdf", "share.png", "share.pdf", "results.md"):
+            self.assertTrue(os.path.getsize(os.path.join(self.out, name)) > 0, name)
+        rows = table_rows(out)
+        self.assertEqual(list(rows), ["other", "texplore-vanir"])  # --agents' order
+        # distance: the empty cell is left out (2 trials); vanir is the reference by name.
+        self.assertEqual(rows["other"][1], "2")
+        self.assertEqual(rows["texplore-vanir"][2], "ref")
+        p = stats.welch_t_test([0.5, 0.6], [0.2, 0.3, 0.25])[2]
+        self.assertEqual(rows["other"][2], stats.format_p(p))
+        # share: 3/4, 1/2, 2/4 for vanir; other's 0/0 trial is missing, not zero.
+        mean, half, n = plot_results.ci95([0.75, 0.5, 0.5])
+        self.assertEqual(rows["texplore-vanir"][3], "%.3f ± %.3f" % (mean, half))
+        self.assertEqual(rows["other"][4], "2")
+        with open(os.path.join(self.out, "results.md")) as f:
+            self.assertIn(rows["other"][3], f.read())
+
+    def test_bad_input_is_refused_with_what_is_valid(self):
+        code, _, err = self.run_main("--column", "d=nosuch")
+        self.assertEqual(code, 2)
+        self.assertIn("no column 'nosuch'", err)
+        self.assertIn("distance", err)  # lists the CSV's columns
+        code, _, err = self.run_main("--column", "d=distance", "--agents", "ghost")
+        self.assertEqual(code, 2)
+        self.assertIn("texplore-vanir", err)
+        code, _, err = self.run_main("--column", "distance")
+        self.assertEqual(code, 2)
+        self.assertIn("LABEL=SPEC", err)
+        self.assertFalse(os.path.exists(self.out))  # nothing written on a refused call
+
+
+class TrialsTable(unittest.TestCase):
+    """trials_table.py: every trial's summary and its distance at a step, from run folders."""
+
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp(prefix="rl_test_trials_table_")
+        fake_run(os.path.join(self.tmp, "a"), "texplore-vanir", [10, 12], [0.2, 0.3], [100, 110])
+        fake_run(os.path.join(self.tmp, "b"), "other", [1], [0.5], [300])
+        os.makedirs(os.path.join(self.tmp, "empty"))
+        self.out = os.path.join(self.tmp, "per-trial.csv")
+
+    def tearDown(self):
+        shutil.rmtree(self.tmp)
+
+    def call(self, *args):
+        with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
+            return trials_table.main(list(args))
+
+    def test_rows_and_distances(self):
+        code = self.call(os.path.join(self.tmp, "a"), os.path.join(self.tmp, "b"), "--out",
+                         self.out, "--at-step", "2", "--at-step", "7")
+        self.assertEqual(code, 0)
+        with open(self.out, newline="") as f:
+            rows = list(csv.DictReader(f))
+        self.assertEqual([(r["agent"], r["trial"]) for r in rows],
+                         [("texplore-vanir", "0"), ("texplore-vanir", "1"), ("other", "0")])
+        self.assertEqual([r["total_reward"] for r in rows], ["10", "12", "1"])
+        self.assertEqual([float(r["distance_step2"]) for r in rows], [0.2, 0.3, 0.5])
+        self.assertEqual([r["distance_step7"] for r in rows], ["", "", ""])  # never measured
+        self.assertFalse(os.path.exists(self.out + ".tmp"))
+        # plot_trials.py draws from the table: the reference's mean distance at step 2.
+        out = io.StringIO()
+        with contextlib.redirect_stdout(out):
+            code = plot_trials.main([self.out, "--out", os.path.join(self.tmp, "figs"),
+                                     "--column", "d=distance_step2"])
+        self.assertEqual(code, 0)
+        mean, half, _ = plot_results.ci95([0.2, 0.3])
+        self.assertEqual(table_rows(out.getvalue())["texplore-vanir"][0],
+                         "%.3f ± %.3f" % (mean, half))
+
+    def test_a_folder_without_trials_is_an_error_and_keeps_the_old_table(self):
+        with open(self.out, "w") as f:
+            f.write("kept\n")
+        code = self.call(os.path.join(self.tmp, "a"), os.path.join(self.tmp, "empty"), "--out",
+                         self.out)
+        self.assertEqual(code, 2)
+        with open(self.out) as f:
+            self.assertEqual(f.read(), "kept\n")
 
 
 class _Recorder(unittest.TextTestResult):
