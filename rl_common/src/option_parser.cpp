@@ -363,4 +363,10 @@ std::vector<std::pair<std::string, std::string>> OptionParser::currentValues() c
   return out;
 }
 
+std::string OptionParser::currentValuesLine() const {
+  std::string line;
+  for (const Spec& s : specs_) line += (line.empty() ? "" : " ") + s.name + "=" + s.current();
+  return line;
+}
+
 }  // namespace rl_common

@@ -158,6 +158,11 @@ TEST(OptionParser, CurrentValuesReportTheEffectiveConfiguration) {
   EXPECT_EQ(values[2], (std::pair<std::string, std::string>{"seed", "12"}));
   EXPECT_EQ(values[3], (std::pair<std::string, std::string>{"stochastic", "true"}));
   EXPECT_EQ(values[4], (std::pair<std::string, std::string>{"deterministic", "false"}));
+  // The one-line form: the same pairs, space-separated, none left out.
+  std::string line;
+  for (const auto& [name, value] : values) line += (line.empty() ? "" : " ") + name + "=" + value;
+  EXPECT_EQ(p.currentValuesLine(), line);
+  EXPECT_EQ(p.currentValuesLine().rfind("gamma=0.1 ", 0), 0u);
 }
 
 TEST(OptionParser, DuplicateDeclarationIsAProgrammingError) {

@@ -1,5 +1,5 @@
 // loadPrivateParams fills a config from ~private parameters with the command line's
-// validation, and the command line wins over parameters.
+// validation, and the command line wins over parameters; startNode, every node's start.
 #include "rl_common/ros/param_loader.h"
 
 #include <gtest/gtest.h>
@@ -69,6 +69,56 @@ TEST(ParamLoader, InvalidParametersNameTheParameter) {
   }
   EXPECT_THROW(rl_common::loadPrivateParams(p, ros::NodeHandle("~bad_type")),
                rl_common::OptionError);
+}
+
+TEST(StartNode, HelpExitsZeroWithoutTouchingTheParameterServer) {
+  Config c;
+  auto p = makeParser(&c);
+  const char* argv[] = {"test", "--help"};
+  testing::internal::CaptureStdout();
+  const rl_common::NodeStart start = rl_common::startNode(
+      p, 2, argv, "test", [] { FAIL() << "check ran after --help"; }, "\nValid things: a, b\n");
+  const std::string out = testing::internal::GetCapturedStdout();
+  EXPECT_FALSE(start);
+  EXPECT_EQ(start.exitCode, 0);
+  EXPECT_NE(out.find("--explore-steps"), std::string::npos) << out;
+  EXPECT_NE(out.find("Valid things: a, b"), std::string::npos) << out;
+  EXPECT_DOUBLE_EQ(c.gamma, 0.99);  // ~gamma (0.5) not read
+}
+
+TEST(StartNode, ParametersThenTheCommandLineThenTheCheck) {
+  Config c;
+  auto p = makeParser(&c);
+  const char* argv[] = {"test", "--gamma", "0.25"};
+  double gammaInCheck = 0.0;
+  const rl_common::NodeStart start =
+      rl_common::startNode(p, 3, argv, "test", [&] { gammaInCheck = c.gamma; });
+  ASSERT_TRUE(start);
+  EXPECT_EQ(start.privateHandle->getNamespace(), ros::NodeHandle("~").getNamespace());
+  EXPECT_DOUBLE_EQ(c.gamma, 0.25);  // the command line wins over ~gamma
+  EXPECT_DOUBLE_EQ(gammaInCheck, 0.25);
+  EXPECT_EQ(c.exploreSteps, 25);  // from ~explore_steps
+}
+
+TEST(StartNode, BadOptionsAndFailedChecksExitTwoWithTheMessage) {
+  for (int kind = 0; kind < 2; ++kind) {
+    Config c;
+    auto p = makeParser(&c);
+    const char* bad[] = {"test", "--nmodels", "0"};
+    const char* good[] = {"test"};
+    testing::internal::CaptureStderr();
+    const rl_common::NodeStart start = kind == 0
+                                           ? rl_common::startNode(p, 3, bad, "mynode")
+                                           : rl_common::startNode(p, 1, good, "mynode", [] {
+                                               throw rl_common::OptionError("option --x needs --y");
+                                             });
+    const std::string err = testing::internal::GetCapturedStderr();
+    EXPECT_FALSE(start);
+    EXPECT_EQ(start.exitCode, 2);
+    EXPECT_EQ(err.rfind("mynode: ", 0), 0u) << err;
+    EXPECT_NE(err.find(kind == 0 ? "must be > 0" : "option --x needs --y"), std::string::npos)
+        << err;
+  }
 }
 
 int main(int argc, char** argv) {

@@ -72,3 +72,23 @@ TEST(Registry, DuplicatesAndBadAliasesAreRejected) {
   EXPECT_THROW(reg.addAlias("round", "square"), std::invalid_argument);
   EXPECT_THROW(reg.add("null", nullptr), std::invalid_argument);
 }
+
+TEST(Registry, EntriesCarryFactsAndTheOptionsTheyRead) {
+  ShapeRegistry reg("shape");
+  reg.add("square", [](double s) { return std::make_unique<Square>(s); }, "", {"polygon"},
+          {"side"});
+  reg.add("circle", [](double r) { return std::make_unique<Circle>(r); }, "", {},
+          {"radius", "side"});
+  reg.add("dot", [](double) { return std::make_unique<Circle>(0.0); });
+  reg.addAlias("round", "circle");
+  EXPECT_TRUE(reg.hasFact("square", "polygon"));
+  EXPECT_FALSE(reg.hasFact("round", "polygon"));
+  EXPECT_EQ(reg.namesWith("polygon"), std::vector<std::string>{"square"});
+  EXPECT_TRUE(reg.takesOption("round", "radius"));
+  EXPECT_FALSE(reg.takesOption("square", "radius"));
+  EXPECT_FALSE(reg.takesOption("dot", "side"));
+  EXPECT_EQ(reg.namesTaking("side"), (std::vector<std::string>{"circle", "square"}));
+  EXPECT_TRUE(reg.namesTaking("colour").empty());
+  EXPECT_EQ(reg.specificOptions(), (std::vector<std::string>{"radius", "side"}));
+  EXPECT_THROW(reg.takesOption("hexagon", "side"), std::invalid_argument);
+}

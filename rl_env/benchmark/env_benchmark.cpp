@@ -27,7 +27,7 @@ Result measure(const std::string& name, double seconds) {
   rl_env::EnvironmentOptions options;
   options.env = name;
   options.seed = 1;
-  std::unique_ptr<rl_common::Environment> env = rl_env::makeEnvironment(options);
+  std::unique_ptr<rl_common::Environment> env = rl_env::builtinEnvironments().make(options);
   rl_common::Random actions(2);
   const int numActions = env->numActions();
   Result r;
@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
   }
   try {
     std::vector<Result> results;
-    for (const std::string& name : rl_env::environmentRegistry().names()) {
+    for (const std::string& name : rl_env::builtinEnvironments().registry().names()) {
       results.push_back(measure(name, seconds));
     }
     double taxi = 0.0;

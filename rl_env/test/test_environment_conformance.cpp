@@ -1,214 +1,40 @@
-// Conformance of every registered environment: declared ranges respected, action range
-// enforced, seed experiences valid, terminal handling per the environment's definition, and
-// seeded reproducibility.
+// Conformance of every environment rl_env registers (rl_env/testing/environment_conformance.h).
+#include "rl_env/testing/environment_conformance.h"
+
 #include <gtest/gtest.h>
 
 #include <map>
-#include <memory>
-#include <stdexcept>
 #include <string>
-#include <vector>
-
-#include "rl_common/random.h"
-#include "rl_env/env/environment_registry.h"
 
 namespace {
 
-using rl_common::Environment;
-using rl_common::State;
+using rl_env::testing::Expectation;
 
 // What each environment is, by definition (shared/spec/ORIGINAL.md §4, §8).
-struct Expectation {
-  bool episodic;
-  bool terminates;  // a random policy reaches a terminal state
-  bool stochastic;  // random dynamics or start states under the default options
-  std::size_t seeds;
-  bool slow = false;  // milliseconds per step (naoarm renders a camera image): fewer steps
-};
-
 const std::map<std::string, Expectation>& expectations() {
   static const std::map<std::string, Expectation> kExpect = {
-      {"taxi", {true, true, true, 0}},           {"tworooms", {true, true, true, 2}},
-      {"fourrooms", {true, true, true, 0}},      {"energy", {true, true, true, 0}},
-      {"fuelworld", {true, true, true, 4}},      {"mcar", {true, true, true, 4}},
-      {"cartpole", {true, true, true, 4}},       {"car2to7", {true, false, false, 25}},
-      {"car7to2", {true, false, false, 25}},     {"carrandom", {true, false, true, 25}},
-      {"stocks", {false, false, true, 0}},       {"lightworld", {false, false, true, 0}},
-      {"naoarm", {false, false, true, 0, true}},
+      {"taxi", {true, true, true, 0}},       {"tworooms", {true, true, true, 2}},
+      {"fourrooms", {true, true, true, 0}},  {"energy", {true, true, true, 0}},
+      {"fuelworld", {true, true, true, 4}},  {"mcar", {true, true, true, 4}},
+      {"cartpole", {true, true, true, 4}},   {"car2to7", {true, false, false, 25}},
+      {"car7to2", {true, false, false, 25}}, {"carrandom", {true, false, true, 25}},
+      {"stocks", {false, false, true, 0}},   {"lightworld", {false, false, true, 0}},
   };
   return kExpect;
 }
 
-std::unique_ptr<Environment> make(const std::string& name, std::uint64_t seed,
-                                  bool stochastic = true) {
-  rl_env::EnvironmentOptions o;
-  o.env = name;
-  o.seed = seed;
-  o.stochastic = stochastic;
-  return rl_env::makeEnvironment(o);
+TEST(ConformanceSetup, EveryBuiltinEnvironmentHasExpectations) {
+  EXPECT_EQ(rl_env::testing::conformanceCases(rl_env::builtinEnvironments(), expectations()).size(),
+            expectations().size());
 }
-
-::testing::AssertionResult inRange(const State& s, const std::vector<float>& min,
-                                   const std::vector<float>& max) {
-  if (s.size() != min.size()) {
-    return ::testing::AssertionFailure()
-           << "state has " << s.size() << " features, declared " << min.size();
-  }
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    if (!(s[i] >= min[i] && s[i] <= max[i])) {
-      return ::testing::AssertionFailure()
-             << "feature " << i << " = " << s[i] << " outside [" << min[i] << ", " << max[i] << "]";
-    }
-  }
-  return ::testing::AssertionSuccess();
-}
-
-class Conformance : public ::testing::TestWithParam<std::string> {
- protected:
-  const Expectation& expect() const { return expectations().at(GetParam()); }
-  /// `n` steps, or a twentieth of them for a slow environment.
-  int steps(int n) const { return expect().slow ? n / 20 : n; }
-};
-
-TEST(ConformanceSetup, EveryRegisteredEnvironmentHasExpectations) {
-  std::vector<std::string> listed;
-  for (const auto& e : expectations()) listed.push_back(e.first);
-  EXPECT_EQ(rl_env::environmentRegistry().names(), listed);
-}
-
-TEST_P(Conformance, DescriptionIsConsistent) {
-  const auto env = make(GetParam(), 1);
-  const rl_common::EnvironmentDescription d = env->describe();
-  EXPECT_GT(d.numActions, 0);
-  ASSERT_EQ(d.minFeatures.size(), d.maxFeatures.size());
-  ASSERT_GT(d.numFeatures(), 0u);
-  for (std::size_t i = 0; i < d.numFeatures(); ++i) EXPECT_LT(d.minFeatures[i], d.maxFeatures[i]);
-  EXPECT_LT(d.minReward, d.maxReward);
-  EXPECT_EQ(env->sensation().size(), d.numFeatures());
-  EXPECT_EQ(d.episodic, expect().episodic);
-  EXPECT_EQ(d.title, "Environment: " + env->name() + "\n");
-}
-
-TEST_P(Conformance, StatesAndRewardsStayInsideTheDeclaredRanges) {
-  for (bool stochastic : {true, false}) {
-    const auto env = make(GetParam(), 3, stochastic);
-    std::vector<float> min, max;
-    env->getMinMaxFeatures(&min, &max);
-    float rmin = 0, rmax = 0;
-    env->getMinMaxReward(&rmin, &rmax);
-    rl_common::Random actions(17);
-    ASSERT_TRUE(inRange(env->sensation(), min, max)) << "start state";
-    for (int step = 0; step < steps(4000); ++step) {
-      const float r = env->apply(actions.uniformInt(0, env->numActions() - 1));
-      ASSERT_GE(r, rmin) << "step " << step;
-      ASSERT_LE(r, rmax) << "step " << step;
-      ASSERT_TRUE(inRange(env->sensation(), min, max)) << "step " << step;
-      if (env->terminal()) {
-        env->reset();
-        ASSERT_TRUE(inRange(env->sensation(), min, max)) << "after reset";
-      }
-    }
-  }
-}
-
-TEST_P(Conformance, ApplyRejectsActionsOutOfRange) {
-  const auto env = make(GetParam(), 1);
-  const State before = env->sensation();
-  for (int a : {-1, env->numActions(), env->numActions() + 7}) {
-    try {
-      env->apply(a);
-      ADD_FAILURE() << "no exception for action " << a;
-    } catch (const std::out_of_range& e) {
-      EXPECT_NE(std::string(e.what()).find("::apply():"), std::string::npos) << e.what();
-    }
-  }
-  EXPECT_EQ(env->sensation(), before);
-}
-
-TEST_P(Conformance, SeedExperiencesAreValid) {
-  const auto env = make(GetParam(), 5);
-  std::vector<float> min, max;
-  env->getMinMaxFeatures(&min, &max);
-  float rmin = 0, rmax = 0;
-  env->getMinMaxReward(&rmin, &rmax);
-  const std::vector<rl_common::Experience> seeds = env->seedExperiences();
-  EXPECT_EQ(seeds.size(), expect().seeds);
-  for (const rl_common::Experience& e : seeds) {
-    EXPECT_TRUE(inRange(e.s, min, max));
-    EXPECT_TRUE(inRange(e.next, min, max));
-    EXPECT_GE(e.action, 0);
-    EXPECT_LT(e.action, env->numActions());
-    EXPECT_GE(e.reward, rmin);
-    EXPECT_LE(e.reward, rmax);
-    if (!expect().episodic) {
-      EXPECT_FALSE(e.terminal);
-    }
-  }
-  // Seeds are a function of the seed: asking twice gives the same list.
-  const std::vector<rl_common::Experience> again = env->seedExperiences();
-  ASSERT_EQ(again.size(), seeds.size());
-  for (std::size_t i = 0; i < seeds.size(); ++i) {
-    EXPECT_EQ(again[i].s, seeds[i].s);
-    EXPECT_EQ(again[i].next, seeds[i].next);
-  }
-}
-
-TEST_P(Conformance, TerminalHandlingFollowsTheDefinition) {
-  const auto env = make(GetParam(), 7);
-  rl_common::Random actions(8);
-  EXPECT_FALSE(env->terminal()) << "a start state is terminal";
-  int terminals = 0;
-  const int budget = steps(expect().terminates ? 200000 : 5000);
-  for (int step = 0; step < budget && terminals < 3; ++step) {
-    env->apply(actions.uniformInt(0, env->numActions() - 1));
-    if (env->terminal()) {
-      ++terminals;
-      env->reset();
-      ASSERT_FALSE(env->terminal()) << "terminal right after reset";
-    }
-  }
-  if (expect().terminates) {
-    EXPECT_EQ(terminals, 3) << "a random policy never ended an episode";
-  } else {
-    EXPECT_EQ(terminals, 0) << "an environment without terminal states reported one";
-  }
-}
-
-// Runs `steps` random actions (from an action stream seeded independently of the
-// environment) with resets, recording every state and reward.
-std::vector<State> trajectory(Environment& env, int steps) {
-  rl_common::Random actions(99);
-  std::vector<State> out{env.sensation()};
-  for (int i = 0; i < steps; ++i) {
-    const float r = env.apply(actions.uniformInt(0, env.numActions() - 1));
-    out.push_back(env.sensation());
-    out.back().push_back(r);
-    if (env.terminal()) {
-      env.reset();
-      out.push_back(env.sensation());
-    }
-  }
-  return out;
-}
-
-TEST_P(Conformance, SameSeedSameTrajectoryDifferentSeedsDiffer) {
-  const auto a = make(GetParam(), 42);
-  const auto b = make(GetParam(), 42);
-  const auto c = make(GetParam(), 43);
-  const int n = steps(1000);
-  const std::vector<State> ta = trajectory(*a, n);
-  EXPECT_EQ(ta, trajectory(*b, n));
-  if (expect().stochastic) {
-    EXPECT_NE(ta, trajectory(*c, n));
-  } else {
-    EXPECT_EQ(ta, trajectory(*c, n)) << "deterministic environment depends on its seed";
-  }
-}
-
-INSTANTIATE_TEST_SUITE_P(AllEnvironments, Conformance,
-                         ::testing::ValuesIn(rl_env::environmentRegistry().names()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                           return info.param;
-                         });
 
 }  // namespace
+
+namespace rl_env::testing {
+
+INSTANTIATE_TEST_SUITE_P(Builtin, EnvironmentConformance,
+                         ::testing::ValuesIn(conformanceCases(builtinEnvironments(),
+                                                              expectations())),
+                         conformanceCaseName);
+
+}  // namespace rl_env::testing

@@ -2,8 +2,11 @@
 // the per-environment applicability check.
 #include "rl_env/env/environment_options.h"
 
+#include "rl_env/env/environment_registry.h"
+
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -16,7 +19,7 @@ using rl_env::EnvironmentOptions;
 // Parses `args` into a fresh options struct; returns it.
 EnvironmentOptions parse(const std::vector<std::string>& args, OptionParser* parser,
                          EnvironmentOptions* o) {
-  rl_env::addEnvironmentOptions(*parser, o);
+  rl_env::addEnvironmentOptions(*parser, o, rl_env::builtinEnvironments());
   parser->parse(args);
   return *o;
 }
@@ -42,13 +45,13 @@ TEST(EnvironmentOptions, ParsesEveryOption) {
   EXPECT_FALSE(o.stochastic);
   EXPECT_EQ(o.nsectors, 4);
   EXPECT_EQ(o.nstocks, 2);
-  EXPECT_NO_THROW(rl_env::checkEnvironmentOptions(parser, o));
+  EXPECT_NO_THROW(rl_env::checkEnvironmentOptions(parser, o, rl_env::builtinEnvironments()));
 
   OptionParser p2("env", "--env <type>");
   EnvironmentOptions o2;
   parse({"-env", "car2to7", "-lag"}, &p2, &o2);  // single-dash long names, as the original
   EXPECT_TRUE(o2.lag);
-  EXPECT_NO_THROW(rl_env::checkEnvironmentOptions(p2, o2));
+  EXPECT_NO_THROW(rl_env::checkEnvironmentOptions(p2, o2, rl_env::builtinEnvironments()));
 }
 
 TEST(EnvironmentOptions, DelayWithTaxiIsRejectedNamingTheOption) {
@@ -56,7 +59,7 @@ TEST(EnvironmentOptions, DelayWithTaxiIsRejectedNamingTheOption) {
   EnvironmentOptions o;
   parse({"--env", "taxi", "--delay", "2"}, &parser, &o);
   try {
-    rl_env::checkEnvironmentOptions(parser, o);
+    rl_env::checkEnvironmentOptions(parser, o, rl_env::builtinEnvironments());
     FAIL() << "--delay accepted for taxi";
   } catch (const OptionError& e) {
     const std::string what = e.what();
@@ -88,9 +91,11 @@ TEST(EnvironmentOptions, EachOptionOnlyForItsEnvironments) {
     EnvironmentOptions o;
     parse(c.args, &parser, &o);
     if (c.ok) {
-      EXPECT_NO_THROW(rl_env::checkEnvironmentOptions(parser, o)) << c.args[1] << " " << c.args[2];
+      EXPECT_NO_THROW(rl_env::checkEnvironmentOptions(parser, o, rl_env::builtinEnvironments()))
+          << c.args[1] << " " << c.args[2];
     } else {
-      EXPECT_THROW(rl_env::checkEnvironmentOptions(parser, o), OptionError)
+      EXPECT_THROW(rl_env::checkEnvironmentOptions(parser, o, rl_env::builtinEnvironments()),
+                   OptionError)
           << c.args[1] << " " << c.args[2];
     }
   }
@@ -107,7 +112,7 @@ TEST(EnvironmentOptions, BadValuesAreRejectedNamingTheOption) {
         {"--nstocks", "100000"}}) {
     OptionParser parser("env", "--env <type>");
     EnvironmentOptions o;
-    rl_env::addEnvironmentOptions(parser, &o);
+    rl_env::addEnvironmentOptions(parser, &o, rl_env::builtinEnvironments());
     try {
       parser.parse(args);
       ADD_FAILURE() << "accepted " << args[0] << " " << args[1];
@@ -115,6 +120,71 @@ TEST(EnvironmentOptions, BadValuesAreRejectedNamingTheOption) {
       EXPECT_NE(std::string(e.what()).find(args[0]), std::string::npos) << e.what();
     }
   }
+}
+
+TEST(EnvironmentOptions, AnUnknownEnvironmentIsAnOptionErrorListingTheValidOnes) {
+  OptionParser parser("env", "--env <type>");
+  EnvironmentOptions o;
+  parse({"--env", "naoarm"}, &parser, &o);  // another package's: not among rl_env's own
+  try {
+    rl_env::checkEnvironmentOptions(parser, o, rl_env::builtinEnvironments());
+    FAIL() << "naoarm accepted by rl_env's own catalog";
+  } catch (const OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find("valid environments: car2to7"), std::string::npos)
+        << e.what();
+  }
+}
+
+// Another package's option, declared with its environment's registration: parsed with the
+// shared ones, defaulted, validated against its choices, and refused for the other entries.
+TEST(EnvironmentOptions, ExtraOptionsComeFromTheCatalog) {
+  rl_env::EnvironmentCatalog catalog;
+  rl_env::addBuiltinEnvironments(catalog);
+  catalog.registry().add("robot",
+                         [](const EnvironmentOptions& o, std::uint64_t seed) {
+                           return rl_env::builtinEnvironments().registry().create("taxi", o, seed);
+                         },
+                         "a robot", {}, {"task"});
+  catalog.addOption({"task", {"explore", "wave"}, "explore", "the robot's task"});
+  EXPECT_THROW(catalog.addOption({"task", {"a"}, "a", ""}), std::invalid_argument);
+  EXPECT_THROW(catalog.addOption({"other", {"a"}, "b", ""}), std::invalid_argument);
+
+  {
+    OptionParser parser("env", "--env <type>");
+    EnvironmentOptions o;
+    rl_env::addEnvironmentOptions(parser, &o, catalog);
+    parser.parse(std::vector<std::string>{"--env", "robot"});
+    EXPECT_EQ(o.extraValue("task", "none"), "explore");
+  }
+  {
+    OptionParser parser("env", "--env <type>");
+    EnvironmentOptions o;
+    rl_env::addEnvironmentOptions(parser, &o, catalog);
+    parser.parse(std::vector<std::string>{"--env", "robot", "--task", "wave"});
+    EXPECT_EQ(o.extraValue("task", "none"), "wave");
+    EXPECT_NO_THROW(rl_env::checkEnvironmentOptions(parser, o, catalog));
+    EXPECT_NE(parser.help().find("the robot's task (robot)"), std::string::npos) << parser.help();
+  }
+  {
+    OptionParser parser("env", "--env <type>");
+    EnvironmentOptions o;
+    rl_env::addEnvironmentOptions(parser, &o, catalog);
+    EXPECT_THROW(parser.parse(std::vector<std::string>{"--task", "dance"}), OptionError);
+  }
+  {
+    OptionParser parser("env", "--env <type>");
+    EnvironmentOptions o;
+    rl_env::addEnvironmentOptions(parser, &o, catalog);
+    parser.parse(std::vector<std::string>{"--env", "taxi", "--task", "wave"});
+    try {
+      rl_env::checkEnvironmentOptions(parser, o, catalog);
+      FAIL() << "--task accepted for taxi";
+    } catch (const OptionError& e) {
+      EXPECT_EQ(std::string(e.what()), "option --task applies only to --env robot, not to 'taxi'");
+    }
+  }
+  EnvironmentOptions unparsed;
+  EXPECT_EQ(unparsed.extraValue("task", "explore"), "explore");
 }
 
 }  // namespace

@@ -17,15 +17,15 @@
 namespace {
 
 TEST(EnvironmentRegistry, HasTheOriginalNamesWithDescriptions) {
-  const std::vector<std::string> expected = {
-      "car2to7",    "car7to2", "carrandom", "cartpole", "energy", "fourrooms", "fuelworld",
-      "lightworld", "mcar",    "naoarm",    "stocks",   "taxi",   "tworooms"};
-  EXPECT_EQ(rl_env::environmentRegistry().names(), expected);
+  const std::vector<std::string> expected = {"car2to7", "car7to2",   "carrandom", "cartpole",
+                                             "energy",  "fourrooms", "fuelworld", "lightworld",
+                                             "mcar",    "stocks",    "taxi",      "tworooms"};
+  EXPECT_EQ(rl_env::builtinEnvironments().registry().names(), expected);
   for (const std::string& name : expected) {
-    EXPECT_FALSE(rl_env::environmentRegistry().description(name).empty()) << name;
+    EXPECT_FALSE(rl_env::builtinEnvironments().registry().description(name).empty()) << name;
     rl_env::EnvironmentOptions o;
     o.env = name;
-    EXPECT_NE(rl_env::makeEnvironment(o), nullptr) << name;
+    EXPECT_NE(rl_env::builtinEnvironments().make(o), nullptr) << name;
   }
 }
 
@@ -33,7 +33,7 @@ TEST(EnvironmentRegistry, UnknownNameListsTheValidOnes) {
   rl_env::EnvironmentOptions o;
   o.env = "gridworld";
   try {
-    rl_env::makeEnvironment(o);
+    rl_env::builtinEnvironments().make(o);
     FAIL() << "no exception";
   } catch (const std::invalid_argument& e) {
     const std::string what = e.what();
@@ -48,33 +48,33 @@ TEST(EnvironmentRegistry, OptionsReachTheEnvironments) {
   o.env = "stocks";
   o.nsectors = 2;
   o.nstocks = 4;
-  EXPECT_EQ(rl_env::makeEnvironment(o)->sensation().size(), 10u);
-  EXPECT_EQ(rl_env::makeEnvironment(o)->numActions(), 3);
+  EXPECT_EQ(rl_env::builtinEnvironments().make(o)->sensation().size(), 10u);
+  EXPECT_EQ(rl_env::builtinEnvironments().make(o)->numActions(), 3);
 
   o.env = "mcar";
   o.delay = 3;
   o.stochastic = false;
-  const auto mcar = rl_env::makeEnvironment(o);
+  const auto mcar = rl_env::builtinEnvironments().make(o);
   EXPECT_EQ(dynamic_cast<rl_env::MountainCar&>(*mcar).delay(), 3);
   EXPECT_FALSE(mcar->isStochastic());
 
   o.env = "tworooms";
-  EXPECT_EQ(dynamic_cast<rl_env::TwoRooms&>(*rl_env::makeEnvironment(o)).delay(), 3);
+  EXPECT_EQ(dynamic_cast<rl_env::TwoRooms&>(*rl_env::builtinEnvironments().make(o)).delay(), 3);
 
   o.env = "carrandom";
   o.lag = true;
-  const auto car = rl_env::makeEnvironment(o);
+  const auto car = rl_env::builtinEnvironments().make(o);
   EXPECT_TRUE(dynamic_cast<rl_env::RobotCarVel&>(*car).lag());
   EXPECT_EQ(dynamic_cast<rl_env::RobotCarVel&>(*car).task(), rl_env::RobotCarVel::Task::kRandom);
 
   // The seed reaches the environment: two seeds, two different start states.
   o.env = "lightworld";
   o.seed = 1;
-  const rl_common::State a = rl_env::makeEnvironment(o)->sensation();
+  const rl_common::State a = rl_env::builtinEnvironments().make(o)->sensation();
   o.seed = 2;
-  const rl_common::State b = rl_env::makeEnvironment(o)->sensation();
+  const rl_common::State b = rl_env::builtinEnvironments().make(o)->sensation();
   o.seed = 1;
-  EXPECT_EQ(rl_env::makeEnvironment(o)->sensation(), a);
+  EXPECT_EQ(rl_env::builtinEnvironments().make(o)->sensation(), a);
   EXPECT_NE(a, b);
 }
 
@@ -83,14 +83,15 @@ TEST(EnvironmentRegistry, OptionsReachTheEnvironments) {
 // The registry's "true-model" fact is what `--agent optimal` and the model-accuracy measurement
 // are offered: it must hold exactly for the environments that are an rl_common::TrueModel.
 TEST(EnvironmentRegistry, TheTrueModelFactHoldsExactlyForTrueModels) {
-  const auto& reg = rl_env::environmentRegistry();
+  const auto& reg = rl_env::builtinEnvironments().registry();
   for (const auto& name : reg.names()) {
     rl_env::EnvironmentOptions o;
     o.env = name;
-    const auto env = rl_env::makeEnvironment(o);
+    const auto env = rl_env::builtinEnvironments().make(o);
     const bool isTrueModel = dynamic_cast<const rl_common::TrueModel*>(env.get()) != nullptr;
     EXPECT_EQ(reg.hasFact(name, rl_env::kTrueModelFact), isTrueModel) << name;
   }
-  EXPECT_EQ(rl_env::trueModelEnvironments(), "fourrooms, lightworld, taxi, tworooms");
+  EXPECT_EQ(rl_env::builtinEnvironments().trueModelNames(),
+            "fourrooms, lightworld, taxi, tworooms");
   EXPECT_THROW(reg.hasFact("nosuchenv", rl_env::kTrueModelFact), std::invalid_argument);
 }

@@ -24,6 +24,7 @@
 #include "rl_common/option_parser.h"
 #include "rl_env/env/environment_registry.h"
 #include "rl_experiment/runner/experiment.h"
+#include "rl_experiment/suite/suite_environments.h"
 
 namespace {
 
@@ -52,7 +53,7 @@ Setup makeSetup(std::uint64_t seed, long rollouts, float actrate, int searchThre
   eo.env = "lightworld";
   eo.seed = seed;
   Setup s;
-  s.env = rl_env::makeEnvironment(eo);
+  s.env = rl_experiment::suiteEnvironments().make(eo);
   rl_agent::AgentOptions ao;
   rl_common::OptionParser p("agent_benchmark", "");
   rl_agent::addAgentOptions(p, &ao);

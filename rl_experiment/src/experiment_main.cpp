@@ -8,8 +8,8 @@
 #include <string>
 
 #include "rl_agent/agent/agent_registry.h"
-#include "rl_env/env/environment_registry.h"
 #include "rl_experiment/runner/experiment.h"
+#include "rl_experiment/suite/suite_environments.h"
 
 int main(int argc, char** argv) {
   rl_experiment::ExperimentConfig config;
@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
       std::cout << parser.help()
                 << "\nValid agents: " << rl_common::joinNames(rl_agent::agentRegistry().names())
                 << "\nValid environments: "
-                << rl_common::joinNames(rl_env::environmentRegistry().names()) << "\n";
+                << rl_common::joinNames(rl_experiment::suiteEnvironments().registry().names())
+                << "\n";
       return 0;
     }
     if (listAgents) {
@@ -39,7 +40,7 @@ int main(int argc, char** argv) {
     if (check) {
       // Some rules need the task (e.g. --taskkey's range, whether the explorer defers): build
       // the environment and the agent once, as a trial does.
-      const auto env = rl_env::makeEnvironment(config.env);
+      const auto env = rl_experiment::suiteEnvironments().make(config.env);
       rl_agent::makeAgent(config.agent, env->describe(),
                           dynamic_cast<const rl_common::TrueModel*>(env.get()));
     }
@@ -65,8 +66,8 @@ int main(int argc, char** argv) {
       }
     }
     std::cout << "Environment is "
-              << (rl_env::makeEnvironment(config.env)->isEpisodic() ? "" : "NOT ") << "episodic."
-              << std::endl;
+              << (rl_experiment::suiteEnvironments().make(config.env)->isEpisodic() ? "" : "NOT ")
+              << "episodic." << std::endl;
     const int failed = experiment.run(std::cout, std::cerr);
     if (!config.out.empty()) std::cout << "logs in " << config.out << "\n";
     return failed == 0 ? 0 : 1;

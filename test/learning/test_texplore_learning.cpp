@@ -57,7 +57,7 @@ std::vector<Episode> runEpisodes(const std::string& name, int episodes, int maxS
   eo.env = name;
   eo.seed = seeds.env;
   eo.stochastic = seeds.stochastic;
-  auto env = rl_env::makeEnvironment(eo);
+  auto env = rl_env::builtinEnvironments().make(eo);
   auto agent = texplore ? makeTexplore(*env, agentArgs, seeds.agent)
                         : makeNamed(*env, agentArgs, seeds.agent);
   agent->seedExperiences(env->seedExperiences());
@@ -121,7 +121,7 @@ std::pair<int, float> stepsToLeaveTheFirstRoom(const std::vector<std::string>& e
   rl_env::EnvironmentOptions eo;
   eo.env = "lightworld";
   eo.seed = 3;
-  auto env = rl_env::makeEnvironment(eo);
+  auto env = rl_env::builtinEnvironments().make(eo);
   std::vector<std::string> args = {"--v", "1", "--n", "3", "--rollouts", "300"};
   args.insert(args.end(), extra.begin(), extra.end());
   auto agent = makeTexplore(*env, args);

@@ -5,8 +5,12 @@
                 ROS (`ros/`, `rl_msgs/`, `cv_bridge/`, ...). ROS adapters live in folders named
                 `ros/` (include/<pkg>/ros/, src/ros/) and nodes in src/nodes/; tests are exempt.
   clang-format  every C++ file is clean under the committed .clang-format.
+  package-deps  the packages are composed, not stacked: each suite package names (in
+                package.xml, in CMakeLists.txt outside comments, in a C++ #include) only the
+                suite packages it may depend on (SUITE_DEPENDENCIES); rl_env knows no robot,
+                rl_agent no environment, and only rl_experiment composes them.
 
-Usage: lint_check.py {ros-free|clang-format} ROOT XUNIT_FILE
+Usage: lint_check.py {ros-free|clang-format|package-deps} ROOT XUNIT_FILE
 """
 import os
 import re
@@ -68,6 +72,56 @@ def check_clang_format(root: Path):
     return cases
 
 
+# The suite packages each package may name; the others (launch files, suite tests,
+# metapackage) may name any. A generic package never depends on a specific one.
+SUITE_DEPENDENCIES = {
+    "rl_msgs": set(),
+    "naoqi_bridge_msgs": set(),
+    "rl_common": set(),
+    "rl_env": {"rl_common", "rl_msgs"},
+    "rl_agent": {"rl_common", "rl_msgs"},
+    "nao_interface": {"rl_common", "rl_env", "rl_msgs", "naoqi_bridge_msgs"},
+    "rl_experiment": {"rl_common", "rl_env", "rl_agent", "nao_interface", "rl_msgs"},
+}
+DEPEND_TAG = re.compile(r"<(?:\w+_)?depend>\s*([\w-]+)\s*</")
+INCLUDE = re.compile(r'^\s*#\s*include\s*[<"](\w+)/')
+
+
+def package_name(pkg: Path) -> str:
+    m = re.search(r"<name>\s*([\w-]+)\s*</name>", (pkg / "package.xml").read_text())
+    return m.group(1) if m else pkg.name
+
+
+def check_package_deps(root: Path):
+    pkgs = {package_name(p): p for p in packages(root)}
+    cases = []
+    for name, allowed in sorted(SUITE_DEPENDENCIES.items()):
+        pkg = pkgs.get(name)
+        if pkg is None:
+            cases.append((f"package_deps.{name}", [f"package {name} not found under {root}"]))
+            continue
+        forbidden = (set(SUITE_DEPENDENCIES) | set(pkgs)) - allowed - {name}
+        problems = []
+        for n, line in enumerate((pkg / "package.xml").read_text().splitlines(), 1):
+            for dep in DEPEND_TAG.findall(line):
+                if dep in forbidden:
+                    problems.append(f"{name}/package.xml:{n}: depends on {dep}")
+        for n, line in enumerate((pkg / "CMakeLists.txt").read_text().splitlines(), 1):
+            code = line.split("#", 1)[0]
+            for word in re.findall(r"[\w-]+", code):
+                if word in forbidden:
+                    problems.append(f"{name}/CMakeLists.txt:{n}: names {word}: {line.strip()}")
+        for f in sorted(cpp_files(pkg)):
+            for n, line in enumerate(f.read_text(errors="replace").splitlines(), 1):
+                m = INCLUDE.match(line)
+                if m and m.group(1) in forbidden:
+                    problems.append(f"{f.relative_to(root)}:{n}: {line.strip()}")
+        if problems:
+            problems.insert(0, f"{name} may name only {', '.join(sorted(allowed)) or 'no suite package'}")
+        cases.append((f"package_deps.{name}", problems))
+    return cases
+
+
 def write_xunit(path: Path, suite: str, cases):
     failures = sum(1 for _, p in cases if p)
     path.parent.mkdir(parents=True, exist_ok=True)
@@ -86,11 +140,13 @@ def write_xunit(path: Path, suite: str, cases):
 
 
 def main():
-    if len(sys.argv) != 4 or sys.argv[1] not in ("ros-free", "clang-format"):
+    checks = {"ros-free": check_ros_free, "clang-format": check_clang_format,
+              "package-deps": check_package_deps}
+    if len(sys.argv) != 4 or sys.argv[1] not in checks:
         print(__doc__)
         return 2
     check, root, xunit = sys.argv[1], Path(sys.argv[2]).resolve(), Path(sys.argv[3])
-    cases = check_ros_free(root) if check == "ros-free" else check_clang_format(root)
+    cases = checks[check](root)
     failures = write_xunit(xunit, f"lint_{check.replace('-', '_')}", cases)
     for name, problems in cases:
         for p in problems:

@@ -3,9 +3,6 @@
 // also come from ~private parameters (the command line wins).
 #include <ros/ros.h>
 
-#include <iostream>
-#include <memory>
-
 #include "nao_interface/ros/nao_arm_bridge.h"
 #include "rl_common/ros/param_loader.h"
 
@@ -14,24 +11,8 @@ int main(int argc, char** argv) {
   nao_interface::NaoArmBridgeOptions options;
   rl_common::OptionParser parser("nao_arm_bridge", "[--task explore|pink|button|mic] [options]");
   nao_interface::addBridgeOptions(parser, &options);
-  // Kept until main() returns: when the last node handle goes, the node shuts down, and a
-  // handle local to the block below silenced every later ROS_* line.
-  std::unique_ptr<ros::NodeHandle> pnh;
-  try {
-    if (!parser.parse(argc, argv)) {
-      std::cout << parser.help();
-      return 0;
-    }
-    pnh = std::make_unique<ros::NodeHandle>("~");
-    rl_common::loadPrivateParams(parser, *pnh);
-    parser.parse(argc, argv);  // the command line wins over parameters
-  } catch (const std::exception& e) {
-    std::cerr << "nao_arm_bridge: " << e.what() << "\n";
-    return 2;
-  }
-  std::string values;
-  for (const auto& [name, value] : parser.currentValues()) values += " " + name + "=" + value;
-  ROS_INFO_STREAM_NAMED("nao_arm_bridge", "configuration:" << values);
+  const rl_common::NodeStart start = rl_common::startNode(parser, argc, argv, "nao_arm_bridge");
+  if (!start) return start.exitCode;
   try {
     nao_interface::NaoArmBridge bridge(ros::NodeHandle(), options);
     ros::spin();

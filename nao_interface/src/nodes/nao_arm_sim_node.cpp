@@ -2,9 +2,6 @@
 // driver (see NaoArmSimNode). Options also come from ~private parameters (command line wins).
 #include <ros/ros.h>
 
-#include <iostream>
-#include <memory>
-
 #include "nao_interface/ros/nao_arm_sim_node.h"
 #include "rl_common/ros/param_loader.h"
 
@@ -20,24 +17,8 @@ int main(int argc, char** argv) {
   parser.value("camera-rate", &options.cameraRate, "Hz of the camera images",
                rl_common::greaterThan(0.0));
   parser.value("driver-ns", &options.driverNs, "namespace of the driver's topics");
-  // Kept until main() returns: when the last node handle goes, the node shuts down, and a
-  // handle local to the block below silenced every later ROS_* line.
-  std::unique_ptr<ros::NodeHandle> pnh;
-  try {
-    if (!parser.parse(argc, argv)) {
-      std::cout << parser.help();
-      return 0;
-    }
-    pnh = std::make_unique<ros::NodeHandle>("~");
-    rl_common::loadPrivateParams(parser, *pnh);
-    parser.parse(argc, argv);  // the command line wins over parameters
-  } catch (const std::exception& e) {
-    std::cerr << "nao_arm_sim: " << e.what() << "\n";
-    return 2;
-  }
-  std::string values;
-  for (const auto& [name, value] : parser.currentValues()) values += " " + name + "=" + value;
-  ROS_INFO_STREAM_NAMED("nao_arm_sim", "configuration:" << values);
+  const rl_common::NodeStart start = rl_common::startNode(parser, argc, argv, "nao_arm_sim");
+  if (!start) return start.exitCode;
   try {
     nao_interface::NaoArmSimNode node(ros::NodeHandle(), config, options);
     ros::spin();

@@ -74,16 +74,17 @@ AgentRegistry buildRegistry() {
                                                  o.filename, o.seed);
           },
           "greedy on the Q-values of a policy file (--filename)", {kBinnedStatesFact});
-  reg.add(
-      "optimal",
-      [](const AgentOptions&,
-         const rl_common::EnvironmentDescription&) -> std::unique_ptr<rl_common::Agent> {
-        throw std::invalid_argument(
-            "makeAgent(): agent 'optimal' plans on the environment's true model: build it with "
-            "that model (the experiment runner passes its environment; the agent node builds "
-            "its own copy from --env), for environments with a true model");
-      },
-      "value iteration on the environment's true model (the paper's optimal policy)");
+  reg.add("optimal",
+          [](const AgentOptions&,
+             const rl_common::EnvironmentDescription&) -> std::unique_ptr<rl_common::Agent> {
+            throw std::invalid_argument(
+                "makeAgent(): agent 'optimal' plans on the environment's true model: build it with "
+                "that model (the experiment runner passes its environment; rl_experiment's "
+                "optimal_agent node builds its own copy from --env), for environments with a true "
+                "model");
+          },
+          "value iteration on the environment's true model (the paper's optimal policy)",
+          {kTrueModelPlannerFact});
   return reg;
 }
 
@@ -113,7 +114,7 @@ std::unique_ptr<rl_common::Agent> makeAgent(const AgentOptions& options,
 std::unique_ptr<rl_common::Agent> makeAgent(const AgentOptions& options,
                                             const rl_common::EnvironmentDescription& description,
                                             const rl_common::TrueModel* trueModel) {
-  if (agentRegistry().canonical(options.agent) != "optimal") {
+  if (!agentRegistry().hasFact(options.agent, kTrueModelPlannerFact)) {
     return makeAgent(options, description);
   }
   if (trueModel == nullptr) {

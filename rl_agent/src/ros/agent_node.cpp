@@ -4,6 +4,7 @@
 #include <rl_msgs/RLExperimentInfo.h>
 #include <rl_msgs/RLRewardBreakdown.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -119,21 +120,34 @@ AgentNode::AgentNode(ros::NodeHandle nh, const AgentOptions& options,
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
   // An action published before the environment is connected is lost, and the pair then waits
   // on each other for good (an agent restarted beside a running env acts on its latched state
-  // at once): such an action is held and sent when the environment subscribes.
+  // at once; an observer connected first does not make the env hear it): such an action is
+  // held for the node that sent the state, and sent to it alone when it connects. roscpp opens
+  // a connection (which hears every publish) before it runs the connection's callback, so the
+  // callbacks still pending when an action goes out are counted: those connections heard it.
   actionPub_ = nh_.advertise<rl_msgs::RLAction>(
-      "rl_agent/rl_action", 1, [this](const ros::SingleSubscriberPublisher& pub) {
-        if (!heldAction_) return;
-        pub.publish(*heldAction_);
-        ROS_INFO_STREAM_NAMED("agent", "sent the held action " << heldAction_->action << " to "
-                                                               << pub.getSubscriberName());
+      "rl_agent/rl_action", 1,
+      [this](const ros::SingleSubscriberPublisher& pub) {
+        const std::string name = pub.getSubscriberName();
+        actionSubscribers_.insert(name);
+        const bool heardIt = unannouncedAtPublish_ > 0;
+        if (heardIt) --unannouncedAtPublish_;
+        if (!heldAction_ || name != heldFor_) return;
+        if (!heardIt) {
+          pub.publish(*heldAction_);
+          ROS_INFO_STREAM_NAMED("agent",
+                                "sent the held action " << heldAction_->action << " to " << name);
+        }
         heldAction_.reset();
+      },
+      [this](const ros::SingleSubscriberPublisher& pub) {
+        actionSubscribers_.erase(pub.getSubscriberName());
       });
   infoPub_ = nh_.advertise<rl_msgs::RLExperimentInfo>("rl_agent/rl_experiment_info", 1);
   breakdownPub_ = nh_.advertise<rl_msgs::RLRewardBreakdown>("rl_agent/rl_reward_breakdown", 10);
   descriptionSub_ =
       nh_.subscribe("rl_env/rl_env_description", 1, &AgentNode::onDescription, this, hints);
   stateSub_ =
-      nh_.subscribe("rl_env/rl_state_reward", kStateQueue, &AgentNode::onState, this, hints);
+      nh_.subscribe("rl_env/rl_state_reward", kStateQueue, &AgentNode::onStateEvent, this, hints);
   seedSub_ = nh_.subscribe("rl_env/rl_seed", 100, &AgentNode::onSeed, this, hints);
   resetSrv_ = nh_.advertiseService("rl_agent/reset", &AgentNode::onReset, this);
   ROS_INFO_STREAM_NAMED("agent", "agent '" << options_.agent << "' waiting for an environment");
@@ -187,8 +201,7 @@ void AgentNode::buildAgent() {
     agent = std::make_unique<JournalingAgent>(std::move(agent), journal_);
   }
   agent_ = std::move(agent);
-  firstAction_ = true;
-  episode_ = 0;
+  driver_.emplace(*agent_);
   steps_ = 0;
 }
 
@@ -285,6 +298,11 @@ void AgentNode::onSeed(const rl_msgs::RLEnvSeedExperience::ConstPtr& msg) {
                             static_cast<bool>(msg->terminal)}});
 }
 
+void AgentNode::onStateEvent(const ros::MessageEvent<rl_msgs::RLStateReward const>& event) {
+  stateSender_ = event.getPublisherName();
+  onState(event.getMessage());
+}
+
 void AgentNode::onState(const rl_msgs::RLStateReward::ConstPtr& msg) {
   if (!description_ && !failed_) {
     earlyState_ = msg;  // acted on once the description has built the agent
@@ -309,32 +327,19 @@ void AgentNode::onState(const rl_msgs::RLStateReward::ConstPtr& msg) {
 }
 
 void AgentNode::act(const rl_msgs::RLStateReward& state) {
-  int action = -1;
-  if (firstAction_) {
-    action = agent_->firstAction(state.state);
-    episodeReward_ = 0.0f;
-    actions_ = 1;
-    firstAction_ = false;
-  } else {
-    episodeReward_ += state.reward;
-    if (state.terminal) {
-      agent_->lastAction(state.reward);
-      ROS_INFO_STREAM_NAMED("agent", "Episode " << episode_ << " reward: " << episodeReward_);
-      rl_msgs::RLExperimentInfo info;
-      info.episode_number = episode_;
-      info.episode_reward = episodeReward_;
-      info.number_actions = actions_;
-      infoPub_.publish(info);
-      ++episode_;
-      episodeReward_ = 0.0f;
-      firstAction_ = true;
-      return;
-    }
-    action = agent_->nextAction(state.reward, state.state);
-    ++actions_;
+  if (state.terminal && !driver_->starting()) {
+    const rl_common::EpisodeDriver::Episode e = driver_->end(state.reward, true, state.state);
+    ROS_INFO_STREAM_NAMED("agent", "Episode " << e.index << " reward: " << e.reward);
+    rl_msgs::RLExperimentInfo info;
+    info.episode_number = e.index;
+    info.episode_reward = e.reward;
+    info.number_actions = static_cast<int>(e.actions);
+    infoPub_.publish(info);
+    return;
   }
+  const int action = driver_->act(state.state, state.reward);
   rl_msgs::RLRewardBreakdown b;
-  b.episode_number = episode_;
+  b.episode_number = driver_->episode().index;
   b.step = static_cast<int>(steps_++);
   b.action = action;
   b.external = state.reward;
@@ -347,14 +352,21 @@ void AgentNode::act(const rl_msgs::RLStateReward& state) {
   breakdownPub_.publish(b);
   rl_msgs::RLAction a;
   a.action = action;
-  if (actionPub_.getNumSubscribers() == 0) {
-    heldAction_ = a;
-    ROS_INFO_STREAM_NAMED("agent",
-                          "holding action " << action << " until an environment subscribes");
-    return;
-  }
-  heldAction_.reset();
+  // Everyone connected hears it; the state's sender, if not connected yet, when it connects.
+  // Counted before the publish: a connection counted here certainly hears it.
+  const int connections = static_cast<int>(actionPub_.getNumSubscribers());
+  unannouncedAtPublish_ = std::max(0, connections - static_cast<int>(actionSubscribers_.size()));
   actionPub_.publish(a);
+  heldAction_.reset();
+  if (!stateSender_.empty() && actionSubscribers_.count(stateSender_) == 0) {
+    heldAction_ = a;
+    heldFor_ = stateSender_;
+    // Once per sender: a relay (e.g. rosbag play) that never subscribes would repeat it.
+    ROS_INFO_STREAM_COND_NAMED(heldFor_ != heldLoggedFor_, "agent",
+                               "holding action " << action << " for " << stateSender_
+                                                 << " until it subscribes to rl_action");
+    heldLoggedFor_ = heldFor_;
+  }
 }
 
 bool AgentNode::onReset(rl_msgs::Reset::Request& req, rl_msgs::Reset::Response& res) {

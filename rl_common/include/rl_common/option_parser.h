@@ -123,6 +123,8 @@ class OptionParser {
   const std::vector<Spec>& specs() const { return specs_; }
   /// Canonical name and current value of every option, in declaration order.
   std::vector<std::pair<std::string, std::string>> currentValues() const;
+  /// The same as one line, "name=value name=value ..." (a node's logged configuration).
+  std::string currentValuesLine() const;
 
  private:
   Spec makeSpec(const std::string& names, Kind kind, const std::string& help) const;

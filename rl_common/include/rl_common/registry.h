@@ -7,8 +7,9 @@
  * an error whose message lists every valid name, so a command line can print it as is.
  *
  * An entry also carries facts about its component (short tags such as an environment's
- * "true-model"), so that a list of the components with a property is read from the registry
- * instead of being written out again wherever it is needed.
+ * "true-model") and the names of the component-specific options it reads (an environment's
+ * "delay"), so that a list of the components with a property, or the check that an option
+ * applies, is read from the registry instead of being written out again wherever it is needed.
  */
 #pragma once
 
@@ -42,10 +43,10 @@ class Registry {
   /// `kind` names the component kind in messages, e.g. "environment".
   explicit Registry(std::string kind) : kind_(std::move(kind)) {}
 
-  /// Adds a factory under a canonical name, with the facts that hold for its product. Throws
-  /// if the name is taken.
+  /// Adds a factory under a canonical name, with the facts that hold for its product and the
+  /// component-specific options it reads. Throws if the name is taken.
   Registry& add(const std::string& name, Factory factory, std::string description = {},
-                std::vector<std::string> facts = {}) {
+                std::vector<std::string> facts = {}, std::vector<std::string> options = {}) {
     if (factory == nullptr) {
       throw std::invalid_argument("Registry::add(): null factory for " + kind_ + " '" + name + "'");
     }
@@ -53,7 +54,8 @@ class Registry {
       throw std::invalid_argument("Registry::add(): " + kind_ + " '" + name +
                                   "' is already registered");
     }
-    entries_.emplace(name, Entry{std::move(factory), std::move(description), std::move(facts)});
+    entries_.emplace(name, Entry{std::move(factory), std::move(description), std::move(facts),
+                                 std::move(options)});
     return *this;
   }
 
@@ -124,6 +126,31 @@ class Registry {
     }
     return out;
   }
+  /// True if the entry of `name` reads the component-specific `option`. Throws if the name
+  /// is unknown.
+  bool takesOption(const std::string& name, const std::string& option) const {
+    const auto& options = entries_.at(canonical(name)).options;
+    return std::find(options.begin(), options.end(), option) != options.end();
+  }
+  /// Canonical names whose entry reads `option`, sorted.
+  std::vector<std::string> namesTaking(const std::string& option) const {
+    std::vector<std::string> out;
+    for (const auto& [name, entry] : entries_) {
+      if (std::find(entry.options.begin(), entry.options.end(), option) != entry.options.end()) {
+        out.push_back(name);
+      }
+    }
+    return out;
+  }
+  /// Every component-specific option some entry reads, sorted and without repeats.
+  std::vector<std::string> specificOptions() const {
+    std::vector<std::string> out;
+    for (const auto& e : entries_)
+      out.insert(out.end(), e.second.options.begin(), e.second.options.end());
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
   const std::string& kind() const { return kind_; }
 
  private:
@@ -131,6 +158,7 @@ class Registry {
     Factory factory;
     std::string description;
     std::vector<std::string> facts;
+    std::vector<std::string> options;
   };
 
   std::string unknownMessage(const std::string& name) const {

@@ -1,20 +1,26 @@
 #include "rl_env/env/environment_options.h"
 
-#include <algorithm>
-#include <vector>
+#include <stdexcept>
 
-#include "nao_interface/env/nao_arm_task.h"
-#include "rl_common/registry.h"
+#include "rl_env/env/environment_registry.h"
 
 namespace rl_env {
 
-void addEnvironmentOptions(rl_common::OptionParser& parser, EnvironmentOptions* o) {
-  parser.value("env", &o->env, "environment (see the list of valid names with an unknown one)");
-  parser.value("seed", &o->seed, "seed of the environment's random source");
-  addEnvironmentVariantOptions(parser, o);
+std::string EnvironmentOptions::extraValue(const std::string& name,
+                                           const std::string& fallback) const {
+  const auto it = extra.find(name);
+  return it == extra.end() ? fallback : it->second;
 }
 
-void addEnvironmentVariantOptions(rl_common::OptionParser& parser, EnvironmentOptions* o) {
+void addEnvironmentOptions(rl_common::OptionParser& parser, EnvironmentOptions* o,
+                           const EnvironmentCatalog& catalog) {
+  parser.value("env", &o->env, "environment (see the list of valid names with an unknown one)");
+  parser.value("seed", &o->seed, "seed of the environment's own random source");
+  addEnvironmentVariantOptions(parser, o, catalog);
+}
+
+void addEnvironmentVariantOptions(rl_common::OptionParser& parser, EnvironmentOptions* o,
+                                  const EnvironmentCatalog& catalog) {
   parser.flag("stochastic", &o->stochastic, true, "noisy dynamics (the default)");
   parser.flag("deterministic", &o->stochastic, false, "noise-free dynamics");
   // Upper bounds keep a typo from exhausting memory (a delay of 1e9 queued 3.3 GB in 15 s).
@@ -24,28 +30,30 @@ void addEnvironmentVariantOptions(rl_common::OptionParser& parser, EnvironmentOp
   parser.flag("lag", &o->lag, true, "second-order brake dynamics (car2to7, car7to2, carrandom)");
   parser.flag("nolag", &o->lag, false, "no brake lag (car*, the default)");
   parser.flag("highvar", &o->highvar, true, "high-variance fuel costs (fuelworld)");
-  parser.choice("task", &o->task, nao_interface::naoArmTaskNames(),
-                "reward of the Nao arm task (naoarm): none, pink pixels, foot button, microphone");
+  for (const ExtraOption& extra : catalog.extraOptions()) {
+    // std::map keeps the element's address while other names are added.
+    std::string& value = o->extra[extra.name];
+    value = extra.defaultValue;
+    parser.choice(
+        extra.name, &value, extra.choices,
+        extra.help + " (" + rl_common::joinNames(catalog.registry().namesTaking(extra.name)) + ")");
+  }
 }
 
-void checkEnvironmentOptions(const rl_common::OptionParser& parser, const EnvironmentOptions& o) {
-  struct Rule {
-    const char* option;
-    std::vector<std::string> envs;
-  };
-  const std::vector<Rule> rules = {
-      {"delay", {"mcar", "tworooms"}},
-      {"nsectors", {"stocks"}},
-      {"nstocks", {"stocks"}},
-      {"lag", {"car2to7", "car7to2", "carrandom"}},
-      {"nolag", {"car2to7", "car7to2", "carrandom"}},
-      {"highvar", {"fuelworld"}},
-      {"task", {"naoarm"}},
-  };
-  for (const Rule& r : rules) {
-    if (parser.given(r.option) && std::find(r.envs.begin(), r.envs.end(), o.env) == r.envs.end()) {
-      throw rl_common::OptionError(std::string("option --") + r.option + " applies only to --env " +
-                                   rl_common::joinNames(r.envs) + ", not to '" + o.env + "'");
+void checkEnvironmentOptions(const rl_common::OptionParser& parser, const EnvironmentOptions& o,
+                             const EnvironmentCatalog& catalog) {
+  const EnvironmentRegistry& registry = catalog.registry();
+  std::string env;
+  try {
+    env = registry.canonical(o.env);
+  } catch (const std::invalid_argument& e) {
+    throw rl_common::OptionError(std::string("option --env: ") + e.what());
+  }
+  for (const std::string& option : registry.specificOptions()) {
+    if (parser.given(option) && !registry.takesOption(env, option)) {
+      throw rl_common::OptionError("option --" + option + " applies only to --env " +
+                                   rl_common::joinNames(registry.namesTaking(option)) +
+                                   ", not to '" + o.env + "'");
     }
   }
 }

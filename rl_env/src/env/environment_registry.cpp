@@ -1,6 +1,8 @@
 #include "rl_env/env/environment_registry.h"
 
-#include "nao_interface/env/nao_arm_environment.h"
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
 
 #include "rl_env/env/cart_pole.h"
 #include "rl_env/env/energy_rooms.h"
@@ -20,8 +22,12 @@ namespace {
 using Options = const EnvironmentOptions&;
 using Ptr = std::unique_ptr<rl_common::Environment>;
 
-EnvironmentRegistry makeRegistry() {
-  EnvironmentRegistry r("environment");
+const std::vector<std::string> kLagOptions = {"lag", "nolag"};
+
+}  // namespace
+
+void addBuiltinEnvironments(EnvironmentCatalog& catalog) {
+  EnvironmentRegistry& r = catalog.registry();
   r.add("taxi",
         [](Options o, std::uint64_t seed) -> Ptr {
           return std::make_unique<Taxi>(seed, o.stochastic);
@@ -33,7 +39,7 @@ EnvironmentRegistry makeRegistry() {
           return std::make_unique<TwoRooms>(seed, o.stochastic, o.delay);
         },
         "5x11 two-room gridworld with a doorway; --delay k delays actions by k steps",
-        {kTrueModelFact});
+        {kTrueModelFact}, {"delay"});
   r.add("fourrooms",
         [](Options o, std::uint64_t seed) -> Ptr {
           return std::make_unique<FourRooms>(seed, o.stochastic);
@@ -46,18 +52,17 @@ EnvironmentRegistry makeRegistry() {
         return std::make_unique<EnergyRooms>(seed, o.stochastic);
       },
       "four rooms with an energy level recharged on four squares");
-  r.add(
-      "fuelworld",
-      [](Options o, std::uint64_t seed) -> Ptr {
-        return std::make_unique<FuelRooms>(seed, o.stochastic, o.highvar);
-      },
-      "21x31 navigation with fuel stations of varying cost on two rows; --highvar");
-  r.add(
-      "mcar",
-      [](Options o, std::uint64_t seed) -> Ptr {
-        return std::make_unique<MountainCar>(seed, o.stochastic, o.delay);
-      },
-      "mountain car; --delay k delays observations by k steps");
+  r.add("fuelworld",
+        [](Options o, std::uint64_t seed) -> Ptr {
+          return std::make_unique<FuelRooms>(seed, o.stochastic, o.highvar);
+        },
+        "21x31 navigation with fuel stations of varying cost on two rows; --highvar", {},
+        {"highvar"});
+  r.add("mcar",
+        [](Options o, std::uint64_t seed) -> Ptr {
+          return std::make_unique<MountainCar>(seed, o.stochastic, o.delay);
+        },
+        "mountain car; --delay k delays observations by k steps", {}, {"delay"});
   r.add(
       "cartpole",
       [](Options o, std::uint64_t seed) -> Ptr {
@@ -69,57 +74,64 @@ EnvironmentRegistry makeRegistry() {
       [](Options o, std::uint64_t seed) -> Ptr {
         return std::make_unique<RobotCarVel>(seed, RobotCarVel::Task::kUp2To7, o.lag);
       },
-      "car velocity control from 2 to 7 m/s with throttle and brake; --lag");
+      "car velocity control from 2 to 7 m/s with throttle and brake; --lag", {}, kLagOptions);
   r.add(
       "car7to2",
       [](Options o, std::uint64_t seed) -> Ptr {
         return std::make_unique<RobotCarVel>(seed, RobotCarVel::Task::kDown7To2, o.lag);
       },
-      "car velocity control from 7 to 2 m/s with throttle and brake; --lag");
+      "car velocity control from 7 to 2 m/s with throttle and brake; --lag", {}, kLagOptions);
   r.add(
       "carrandom",
       [](Options o, std::uint64_t seed) -> Ptr {
         return std::make_unique<RobotCarVel>(seed, RobotCarVel::Task::kRandom, o.lag);
       },
-      "car velocity control between random velocities; --lag");
-  r.add(
-      "stocks",
-      [](Options o, std::uint64_t seed) -> Ptr {
-        return std::make_unique<Stocks>(seed, o.stochastic, o.nsectors, o.nstocks);
-      },
-      "factored stock trading (Strehl et al. 2007); --nsectors, --nstocks");
+      "car velocity control between random velocities; --lag", {}, kLagOptions);
+  r.add("stocks",
+        [](Options o, std::uint64_t seed) -> Ptr {
+          return std::make_unique<Stocks>(seed, o.stochastic, o.nsectors, o.nstocks);
+        },
+        "factored stock trading (Strehl et al. 2007); --nsectors, --nstocks", {},
+        {"nsectors", "nstocks"});
   r.add("lightworld",
         [](Options o, std::uint64_t seed) -> Ptr {
           return std::make_unique<LightWorld>(seed, o.stochastic);
         },
         "the TEXPLORE-VANIR paper's 4-room key/lock/door world with light sensors",
         {kTrueModelFact});
-  r.add(
-      "naoarm",
-      [](Options o, std::uint64_t seed) -> Ptr {
-        nao_interface::NaoArmSimConfig config;
-        config.stochastic = o.stochastic;
-        return std::make_unique<nao_interface::NaoArmEnvironment>(
-            config, nao_interface::parseNaoArmTask(o.task), seed);
-      },
-      "the paper's simulated seated Nao moving its right shoulder (8 features, 5 actions); "
-      "--task explore|pink|button|mic");
-  return r;
 }
 
-}  // namespace
-
-const EnvironmentRegistry& environmentRegistry() {
-  static const EnvironmentRegistry registry = makeRegistry();
-  return registry;
+void EnvironmentCatalog::addOption(ExtraOption option) {
+  for (const ExtraOption& o : extraOptions_) {
+    if (o.name == option.name) {
+      throw std::invalid_argument("EnvironmentCatalog::addOption(): --" + option.name +
+                                  " is declared already");
+    }
+  }
+  if (std::find(option.choices.begin(), option.choices.end(), option.defaultValue) ==
+      option.choices.end()) {
+    throw std::invalid_argument("EnvironmentCatalog::addOption(): the default of --" + option.name +
+                                " is not one of its choices");
+  }
+  extraOptions_.push_back(std::move(option));
 }
 
-std::string trueModelEnvironments() {
-  return rl_common::joinNames(environmentRegistry().namesWith(kTrueModelFact));
+std::unique_ptr<rl_common::Environment> EnvironmentCatalog::make(
+    const EnvironmentOptions& options) const {
+  return registry_.create(options.env, options, options.seed);
 }
 
-std::unique_ptr<rl_common::Environment> makeEnvironment(const EnvironmentOptions& options) {
-  return environmentRegistry().create(options.env, options, options.seed);
+std::string EnvironmentCatalog::trueModelNames() const {
+  return rl_common::joinNames(registry_.namesWith(kTrueModelFact));
+}
+
+const EnvironmentCatalog& builtinEnvironments() {
+  static const EnvironmentCatalog catalog = [] {
+    EnvironmentCatalog c;
+    addBuiltinEnvironments(c);
+    return c;
+  }();
+  return catalog;
 }
 
 }  // namespace rl_env

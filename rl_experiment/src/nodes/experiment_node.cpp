@@ -28,29 +28,19 @@ int main(int argc, char** argv) {
   parser.value("env", &config.env, "the env node's environment (recorded in the logs)");
   parser.value("timeout", &config.timeout, "seconds without a step before a trial fails",
                rl_common::greaterThan(0.0));
-  // Kept until main() returns: when the last node handle goes, the node shuts down, and a
-  // handle local to the block below silenced every later ROS_* line.
-  std::unique_ptr<ros::NodeHandle> pnh;
-  try {
-    if (!parser.parse(argc, argv)) {
-      std::cout << parser.help();
-      return 0;
-    }
-    pnh = std::make_unique<ros::NodeHandle>("~");
-    rl_common::loadPrivateParams(parser, *pnh);
-    parser.parse(argc, argv);  // the command line wins over parameters
-    if (config.resume && (config.force || config.out.empty() || config.out == "auto")) {
-      throw rl_common::OptionError(
-          "option --resume needs the --out folder of the run to finish, and not --force");
-    }
-  } catch (const std::exception& e) {
-    std::cerr << "experiment_node: " << e.what() << "\n(see experiment_node --help)\n";
-    return 2;
-  }
+  const rl_common::NodeStart start =
+      rl_common::startNode(parser, argc, argv, "experiment_node", [&] {
+        if (config.resume && (config.force || config.out.empty() || config.out == "auto")) {
+          throw rl_common::OptionError(
+              "option --resume needs the --out folder of the run to finish, and not --force");
+        }
+      });
+  if (!start) return start.exitCode;
   if (config.out == "auto") {
     const std::string home = rl_common::rosHome();
     config.out = (home.empty() ? std::string("/tmp") : home) + "/rl_experiment/run-" +
                  rl_common::localTimestamp();
+    ROS_INFO_STREAM_NAMED("experiment_node", "out=auto: the run folder is " << config.out);
   }
   std::string commandLine;
   for (int i = 0; i < argc; ++i) commandLine += (i > 0 ? " " : "") + std::string(argv[i]);
@@ -69,9 +59,6 @@ int main(int argc, char** argv) {
     std::cerr << "experiment_node: " << e.what() << "\n";
     return 1;
   }
-  std::string values;
-  for (const auto& [name, value] : parser.currentValues()) values += " " + name + "=" + value;
-  ROS_INFO_STREAM_NAMED("experiment", "configuration:" << values);
   rl_experiment::ExperimentNode node(ros::NodeHandle(), config, &experiment);
   const int failed = node.run();
   // The last progress message ("finished ...") leaves on the network thread: give it time to

@@ -26,6 +26,7 @@
 #include "rl_env/env/environment_registry.h"
 #include "rl_experiment/log/csv_file.h"
 #include "rl_experiment/log/trial_logger.h"
+#include "rl_experiment/suite/suite_environments.h"
 
 #ifndef RL_EXPERIMENT_SOURCE_DIR
 #define RL_EXPERIMENT_SOURCE_DIR ""
@@ -40,7 +41,7 @@ void addExperimentOptions(rl_common::OptionParser& p, ExperimentConfig* c) {
   using rl_common::atLeast;
   using rl_common::greaterThan;
   rl_agent::addAgentOptions(p, &c->agent);
-  rl_env::addEnvironmentOptions(p, &c->env);
+  rl_env::addEnvironmentOptions(p, &c->env, suiteEnvironments());
   p.value("nepisodes", &c->nepisodes,
           "episodes per trial (steps for non-episodic tasks, as the original)", atLeast(0));
   p.value("steps", &c->steps, "steps per trial of a non-episodic task (overrides --nepisodes)",
@@ -91,22 +92,19 @@ void addExperimentOptions(rl_common::OptionParser& p, ExperimentConfig* c) {
 }
 
 void finishExperimentConfig(const rl_common::OptionParser& p, ExperimentConfig* c) {
-  rl_env::checkEnvironmentOptions(p, c->env);
-  try {
-    c->env.env = rl_env::environmentRegistry().canonical(c->env.env);
-  } catch (const std::invalid_argument& e) {
-    throw rl_common::OptionError(std::string("option --env: ") + e.what());
-  }
+  const rl_env::EnvironmentCatalog& environments = suiteEnvironments();
+  rl_env::checkEnvironmentOptions(p, c->env, environments);  // an unknown --env too
+  c->env.env = environments.registry().canonical(c->env.env);
   try {
     c->agent.agent = rl_agent::agentRegistry().canonical(c->agent.agent);
   } catch (const std::invalid_argument& e) {
     throw rl_common::OptionError(std::string("option --agent: ") + e.what());
   }
-  if (c->agent.agent == "optimal" &&
-      !rl_env::environmentRegistry().hasFact(c->env.env, rl_env::kTrueModelFact)) {
+  if (rl_agent::agentRegistry().hasFact(c->agent.agent, rl_agent::kTrueModelPlannerFact) &&
+      !environments.registry().hasFact(c->env.env, rl_env::kTrueModelFact)) {
     throw rl_common::OptionError("--agent optimal plans on the environment's true model; --env " +
-                                 c->env.env +
-                                 " has none (valid: " + rl_env::trueModelEnvironments() + ")");
+                                 c->env.env + " has none (valid: " + environments.trueModelNames() +
+                                 ")");
   }
   rl_agent::applyAgentDefaults(p, &c->agent);
   rl_agent::checkAgentOptions(p, c->agent);
@@ -382,7 +380,7 @@ std::vector<std::pair<std::string, std::string>> Experiment::runTrial(
   ao.seed = seeds.agent;
   resetPeakRss();
   const auto start = std::chrono::steady_clock::now();
-  auto env = rl_env::makeEnvironment(eo);
+  auto env = suiteEnvironments().make(eo);
   // `optimal` plans on the environment's exact dynamics (the other agents ignore them).
   auto agent = rl_agent::makeAgent(ao, env->describe(),
                                    dynamic_cast<const rl_common::TrueModel*>(env.get()));

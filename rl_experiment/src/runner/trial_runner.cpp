@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "rl_common/episode_driver.h"
 #include "rl_experiment/runner/agent_probe.h"
 
 namespace rl_experiment {
@@ -82,13 +83,12 @@ TrialSummary TrialRunner::run(rl_common::Environment& env, rl_common::Agent& age
     return rec.reward;
   };
 
+  rl_common::EpisodeDriver driver(agent);
   if (!env.isEpisodic()) {
     EpisodeRecord ep;
     if (limits_.steps > 0) {
-      float r = step(agent.firstAction(env.sensation()), 0, ep);
-      for (int i = 1; i < limits_.steps; ++i) {
-        r = step(agent.nextAction(r, env.sensation()), 0, ep);
-      }
+      float r = 0.0f;
+      for (int i = 0; i < limits_.steps; ++i) r = step(driver.act(env.sensation(), r), 0, ep);
       obs.onEpisode(ep);
       summary.episodes = 1;
     }
@@ -96,16 +96,11 @@ TrialSummary TrialRunner::run(rl_common::Environment& env, rl_common::Agent& age
     for (int e = 0; e < limits_.episodes; ++e) {
       EpisodeRecord ep;
       ep.episode = e;
-      float r = step(agent.firstAction(env.sensation()), e, ep);
+      float r = step(driver.act(env.sensation(), 0.0f), e, ep);
       while (!env.terminal() && ep.steps < limits_.maxSteps) {
-        r = step(agent.nextAction(r, env.sensation()), e, ep);
+        r = step(driver.act(env.sensation(), r), e, ep);
       }
-      if (env.terminal()) {
-        agent.lastAction(r);
-        ep.terminal = true;
-      } else {
-        agent.nextAction(r, env.sensation());  // the original's cut-off: action discarded
-      }
+      ep.terminal = driver.end(r, env.terminal(), env.sensation()).terminal;
       obs.onEpisode(ep);
       ++summary.episodes;
       env.reset();
@@ -127,7 +122,7 @@ TrialSummary TrialRunner::runPhased(rl_common::Environment& env, rl_common::Agen
   auto phaseAt = [&](long i) { return i < limits_.exploreSteps ? Phase::kExplore : Phase::kTask; };
 
   EpisodeRecord ep;
-  bool starting = true;               // the next action starts an episode
+  rl_common::EpisodeDriver driver(agent);
   float seen = 0.0f;                  // the reward the agent receives with its next call
   std::vector<float> exploreRewards;  // the task's reward of every exploration step
   Phase current = phaseAt(0);
@@ -142,7 +137,7 @@ TrialSummary TrialRunner::runPhased(rl_common::Environment& env, rl_common::Agen
       if (limits_.giveTaskRewards) {
         const long given = giveTaskRewards(agent, exploreRewards);
         // The last exploration step, not learned yet, comes with its true reward as well.
-        if (given >= 0 && !starting) seen = exploreRewards.back();
+        if (given >= 0 && !driver.starting()) seen = exploreRewards.back();
       }
       setIntrinsicEnabled(agent, false);
       obs.onPhase(current);
@@ -151,15 +146,12 @@ TrialSummary TrialRunner::runPhased(rl_common::Environment& env, rl_common::Agen
     rec.step = i;
     rec.episode = summary.episodes;
     rec.phase = phase;
-    if (starting) {
+    if (driver.starting()) {
       ep = EpisodeRecord();
       ep.episode = summary.episodes;
       ep.phase = phase;
-      rec.action = agent.firstAction(env.sensation());
-      starting = false;
-    } else {
-      rec.action = agent.nextAction(seen, env.sensation());
     }
+    rec.action = driver.act(env.sensation(), seen);
     addBreakdown(agent, &rec);
     obs.beforeStep(env, i, rec.action);
     rec.reward = env.apply(rec.action);
@@ -174,22 +166,16 @@ TrialSummary TrialRunner::runPhased(rl_common::Environment& env, rl_common::Agen
     ep.reward += rec.reward;
     ++ep.steps;
     if (env.isEpisodic() && (rec.terminal || ep.steps >= limits_.maxSteps)) {
-      if (rec.terminal) {
-        agent.lastAction(seen);
-        ep.terminal = true;
-      } else {
-        agent.nextAction(seen, env.sensation());  // cut off: action discarded
-      }
+      ep.terminal = driver.end(seen, rec.terminal, env.sensation()).terminal;
       obs.onEpisode(ep);
       ++summary.episodes;
       env.reset();
-      starting = true;
     }
     if (every > 0 && summary.steps % every == 0) {
       obs.onCheckpoint(summary.steps, phase, agent, env);
     }
   }
-  if (!starting && total > 0) {  // the unfinished (or non-episodic) episode
+  if (!driver.starting() && total > 0) {  // the unfinished (or non-episodic) episode
     obs.onEpisode(ep);
     ++summary.episodes;
   }

@@ -1,6 +1,7 @@
 /**
  * NaoArmEnvironment: the paper's Nao arm domain (Hester & Stone, TEXPLORE-VANIR, §5.2) as an
- * rl_common::Environment for the standalone runner, registered in rl_env as `naoarm`.
+ * rl_common::Environment for the standalone runner, registered as `naoarm` by
+ * addNaoArmEnvironment (nao_arm_registration.h).
  *
  * It runs the same NaoArmSimulation the nao_arm_sim node serves, in simulated time: each step
  * moves the shoulder targets by the action (nao_arm_task.h), advances the simulation by

@@ -20,8 +20,11 @@ namespace rl_agent {
 
 /// Facts of the registry's entries: tabular learners without a model (their options --alpha,
 /// --initialvalue), model-based agents (the model, planner and exploration options), and the
-/// agents that see --nstates-binned states through a DiscretizationAgent.
+/// agents that see --nstates-binned states through a DiscretizationAgent; and the agents that
+/// plan on the environment's true model (optimal: only a program that can build the
+/// environment offers them, as the runner and rl_experiment's optimal_agent node do).
 inline constexpr const char* kModelFreeFact = "model-free";
+inline constexpr const char* kTrueModelPlannerFact = "plans-on-true-model";
 inline constexpr const char* kModelBasedFact = "model-based";
 inline constexpr const char* kBinnedStatesFact = "binned-states";
 

@@ -37,6 +37,7 @@
 
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,7 @@
 #include "rl_agent/journal/experience_journal.h"
 #include "rl_common/agent.h"
 #include "rl_common/environment.h"
+#include "rl_common/episode_driver.h"
 #include "rl_common/rate_limited_log.h"
 #include "rl_common/true_model.h"
 
@@ -83,6 +85,8 @@ class AgentNode {
 
   void onDescription(const rl_msgs::RLEnvDescription::ConstPtr& msg);
   void onSeed(const rl_msgs::RLEnvSeedExperience::ConstPtr& msg);
+  /// A state from the network: notes which node sent it (the one the action answers).
+  void onStateEvent(const ros::MessageEvent<rl_msgs::RLStateReward const>& event);
   void onState(const rl_msgs::RLStateReward::ConstPtr& msg);
   /// The agent's answer to a valid state: its action, or at a terminal state the episode's
   /// end. Throws what the agent throws.
@@ -103,18 +107,25 @@ class AgentNode {
   rl_common::Agent* core_ = nullptr;         ///< the agent itself (agent_ or the one it wraps)
   JournalSettings journalSettings_;
   std::shared_ptr<ExperienceJournalWriter> journal_;
-  std::optional<JournalContents> resume_;  ///< the resume journal, read at the first build
-  bool firstAction_ = true;
-  int episode_ = 0;
-  int actions_ = 0;
+  std::optional<JournalContents> resume_;           ///< the resume journal, read at the first build
+  std::optional<rl_common::EpisodeDriver> driver_;  ///< drives agent_ through its episodes
   long steps_ = 0;
-  float episodeReward_ = 0.0f;
   std::vector<rl_msgs::RLEnvSeedExperience::ConstPtr> earlySeeds_;  ///< before any description
   rl_msgs::RLStateReward::ConstPtr earlyState_;                     ///< the latest such state
   ros::Subscriber descriptionSub_, stateSub_, seedSub_;
   ros::Publisher actionPub_, infoPub_, breakdownPub_;
-  /// An action chosen while no environment subscribed to rl_action; sent when one does.
+  /// Who hears rl_action: the subscribers whose connection callback has run, and how many of
+  /// the connections open when the last action went out had not run theirs yet (those heard it).
+  std::set<std::string> actionSubscribers_;
+  int unannouncedAtPublish_ = 0;
+  /// The node that sent the latest state (the environment, or whoever plays it).
+  std::string stateSender_;
+  /// The latest action, if the node whose state it answers was not connected to rl_action when
+  /// it went out (an observer such as rosbag or a test may connect first): sent to that node
+  /// alone when it connects.
   std::optional<rl_msgs::RLAction> heldAction_;
+  std::string heldFor_;
+  std::string heldLoggedFor_;  ///< the sender the last "holding" line named
   ros::ServiceServer resetSrv_;
   /// Malformed messages: one warning each, at most 10 a second (a burst is counted, not logged).
   mutable rl_common::RateLimitedLog dropLog_;

@@ -6,12 +6,17 @@
  * A parameter's name is the option's name with '-' turned into '_' (ROS names allow no dashes),
  * e.g. `--explore-steps` is `~explore_steps`. Values may be bool, int, double or string. Flags
  * take a bool: `~deterministic: true` acts as `--deterministic`, `~deterministic: false` as its
- * opposite. The command line is applied after the parameters, so it wins.
+ * opposite. The command line is applied after the parameters, so it wins. startNode() is the
+ * start of every node's main(): options, parameters, checks, help and exit codes in one place.
  */
 #pragma once
 
+#include <ros/console.h>
 #include <ros/node_handle.h>
 
+#include <functional>
+#include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -71,6 +76,44 @@ inline bool parseNodeOptions(OptionParser& parser, int argc, const char* const* 
                              const ros::NodeHandle& pnh) {
   loadPrivateParams(parser, pnh);
   return parser.parse(argc, argv);
+}
+
+/// What startNode() leaves to main(): run the node while `privateHandle` lives, or return
+/// `exitCode`.
+struct NodeStart {
+  /// Null: main() returns exitCode. Kept until main() returns: when the last node handle goes,
+  /// the node shuts down, and logging with it (a temporary handle silenced every later ROS_*
+  /// line).
+  std::unique_ptr<ros::NodeHandle> privateHandle;
+  int exitCode = 0;  ///< 0 after --help, 2 for a bad option or parameter
+  explicit operator bool() const { return privateHandle != nullptr; }
+};
+
+/// Every node's start: the command line first (--help and a mistyped option need no master),
+/// then the `~private` parameters and the command line again (it wins), then `check` (the
+/// node's own option rules; throws). --help prints the help and `helpExtra`; an error prints
+/// "program: message" to stderr and gives exit code 2. On success logs the configuration
+/// ("configuration: name=value ...", rosconsole logger `program`).
+inline NodeStart startNode(OptionParser& parser, int argc, const char* const* argv,
+                           const std::string& program, const std::function<void()>& check = {},
+                           const std::string& helpExtra = "") {
+  NodeStart start;
+  try {
+    if (!parser.parse(argc, argv)) {
+      std::cout << parser.help() << helpExtra;
+      return start;
+    }
+    start.privateHandle = std::make_unique<ros::NodeHandle>("~");
+    parseNodeOptions(parser, argc, argv, *start.privateHandle);  // no --help: seen above
+    if (check) check();
+  } catch (const std::exception& e) {
+    std::cerr << program << ": " << e.what() << "\n";
+    start.privateHandle.reset();
+    start.exitCode = 2;
+    return start;
+  }
+  ROS_INFO_STREAM_NAMED(program, "configuration: " << parser.currentValuesLine());
+  return start;
 }
 
 }  // namespace rl_common

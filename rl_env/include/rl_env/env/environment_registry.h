@@ -1,11 +1,14 @@
 /**
- * The environment registry: every environment of the suite under the original's --env names.
+ * The environment registry and the catalog a program offers: rl_env's built-in environments
+ * under the original's --env names, plus whatever the program's composition adds (the runner
+ * adds nao_interface's naoarm; rl_env itself knows no robot).
  */
 #pragma once
 
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "rl_common/environment.h"
 #include "rl_common/registry.h"
@@ -21,15 +24,34 @@ using EnvironmentRegistry =
 /// state-action, as `--agent optimal` and the model-accuracy measurement need).
 inline constexpr const char* kTrueModelFact = "true-model";
 
-/// The registry: taxi, tworooms, fourrooms, energy, fuelworld, mcar, cartpole, car2to7,
-/// car7to2, carrandom, stocks, lightworld, naoarm.
-const EnvironmentRegistry& environmentRegistry();
+/// The environments one program offers and the extra options some of them read.
+class EnvironmentCatalog {
+ public:
+  EnvironmentRegistry& registry() { return registry_; }
+  const EnvironmentRegistry& registry() const { return registry_; }
 
-/// The environments with a true model, "a, b, c" (for messages and help texts).
-std::string trueModelEnvironments();
+  /// Declares an option for environments registered with it in their entry's options. Throws
+  /// std::invalid_argument if the name is declared already or the default is not a choice.
+  void addOption(ExtraOption option);
+  const std::vector<ExtraOption>& extraOptions() const { return extraOptions_; }
 
-/// Builds `options.env` seeded with `options.seed`. Throws std::invalid_argument listing the
-/// valid names if the name is unknown.
-std::unique_ptr<rl_common::Environment> makeEnvironment(const EnvironmentOptions& options);
+  /// Builds `options.env` seeded with `options.seed`. Throws std::invalid_argument listing the
+  /// valid names if the name is unknown.
+  std::unique_ptr<rl_common::Environment> make(const EnvironmentOptions& options) const;
+
+  /// The environments with a true model, "a, b, c" (for messages and help texts).
+  std::string trueModelNames() const;
+
+ private:
+  EnvironmentRegistry registry_{"environment"};
+  std::vector<ExtraOption> extraOptions_;
+};
+
+/// Adds rl_env's environments: taxi, tworooms, fourrooms, energy, fuelworld, mcar, cartpole,
+/// car2to7, car7to2, carrandom, stocks, lightworld.
+void addBuiltinEnvironments(EnvironmentCatalog& catalog);
+
+/// A catalog of rl_env's built-in environments alone (what rl_env's env node offers).
+const EnvironmentCatalog& builtinEnvironments();
 
 }  // namespace rl_env
