@@ -5,7 +5,8 @@ Usage: trials_table.py --out FILE [--at-step N ...] RUN_FOLDER [RUN_FOLDER ...]
 
 Each RUN_FOLDER is an `--out` folder of the `experiment` runner or node. Writes FILE (CSV): one
 row per finished trial (the folder's trial-NNN.csv summaries: seeds, rewards, final accuracy,
-PRESS and PICKUP counts by place, time), with the folder's label as the first column, `agent`,
+PRESS and PICKUP counts by place, time), with the folder's label as the first column, `agent`
+(the summary's agent type becomes `agent_type`),
 and for each --at-step N a column `distance_stepN`: the model's variational distance measured
 at step N (accuracy-NNN.csv; empty where the trial has no such measurement, e.g. a model-free
 agent). Columns are the union over folders, in first-seen order. The run folders (steps files,
@@ -35,8 +36,12 @@ def folder_rows(folder, steps):
     label = label_of(folder)
     for path in sorted(glob.glob(os.path.join(folder, "trial-*.csv"))):
         for summary in read_csv(path):
+            # `agent` is the run's label (as in the figures); the summary's agent type (e.g.
+            # texplore for every TEXPLORE explorer) is kept as `agent_type`.
             row = {"agent": label}
-            row.update((k, v) for k, v in summary.items() if k != "label")
+            for k, v in summary.items():
+                if k != "label":
+                    row["agent_type" if k == "agent" else k] = v
             accuracy = os.path.join(folder, "accuracy-%03d.csv" % int(summary["trial"]))
             acc = read_csv(accuracy) if os.path.exists(accuracy) else []
             for n in steps:

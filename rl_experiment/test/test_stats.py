@@ -162,8 +162,8 @@ def fake_run(folder, label, rewards, distances, speeds):
                   ["trial", "step", "phase", "variational_distance", "samples"],
                   [[i, 0, "explore", 0.9, 10], [i, 2, "explore", distance, 10]])
         write_csv(os.path.join(folder, "trial-%03d.csv" % i),
-                  ["trial", "label", "total_reward", "steps_per_second"],
-                  [[i, label, reward, speed]])
+                  ["trial", "label", "agent", "total_reward", "steps_per_second"],
+                  [[i, label, "texplore", reward, speed]])
 
 
 def table_rows(text):
@@ -384,6 +384,7 @@ class TrialsTable(unittest.TestCase):
         self.assertEqual([(r["agent"], r["trial"]) for r in rows],
                          [("texplore-vanir", "0"), ("texplore-vanir", "1"), ("other", "0")])
         self.assertEqual([r["total_reward"] for r in rows], ["10", "12", "1"])
+        self.assertEqual({r["agent_type"] for r in rows}, {"texplore"})  # the label is `agent`
         self.assertEqual([float(r["distance_step2"]) for r in rows], [0.2, 0.3, 0.5])
         self.assertEqual([r["distance_step7"] for r in rows], ["", "", ""])  # never measured
         self.assertFalse(os.path.exists(self.out + ".tmp"))
