@@ -31,6 +31,7 @@
 #include "rl_agent/agent/agent_options.h"
 #include "rl_common/option_parser.h"
 #include "rl_env/env/environment_options.h"
+#include "rl_experiment/runner/system_info.h"
 #include "rl_experiment/runner/trial_runner.h"
 
 namespace rl_experiment {
@@ -66,19 +67,11 @@ void addExperimentOptions(rl_common::OptionParser& parser, ExperimentConfig* con
 /// combinations). Throws rl_common::OptionError naming the option and what is valid.
 void finishExperimentConfig(const rl_common::OptionParser& parser, ExperimentConfig* config);
 
-/// The suite's version: `git describe --always --dirty` of the source tree if available, else
-/// the package version.
-std::string suiteVersion();
-
 /// Seeds of trial `trial` of a run seeded with `runSeed`.
 struct TrialSeeds {
   std::uint64_t agent, env, eval;
 };
 TrialSeeds trialSeeds(std::uint64_t runSeed, int trial);
-
-/// Peak resident memory of this process in kB (VmHWM), and a reset of it (best effort).
-long peakRssKb();
-void resetPeakRss();
 
 class Experiment {
  public:
