@@ -5,7 +5,7 @@ Usage: plot_trials.py --out DIR [--title TEXT] [--reference AGENT] [--agents A,B
                       --column LABEL=SPEC [--column LABEL=SPEC ...] TRIALS_CSV
 
 For tables of finished trials whose run folders are not kept, e.g.
-docs/science/data/lightworld-paper-seed1-explore-task-interim.csv. SPEC names the CSV's
+docs/science/data/lightworld-paper-seed1-explore-task.csv. SPEC names the CSV's
 columns: `col` (the value), `a+b` (a sum) or `a+b/c+d` (a ratio of sums, e.g. the share of
 PRESS actions on objects). An empty cell makes the trial's value missing (left out of that
 column). Per column, draws DIR/<slug>.png and .pdf: every trial's value as a dot and each
