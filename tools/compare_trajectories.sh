@@ -69,7 +69,8 @@ build() {
   local sha base start
   sha=$(git -C "$ROOT" rev-parse --short "$1^{commit}")
   base=$ROOT/.build/compare-$sha
-  if [ ! -x "$base/devel/lib/rl_experiment/experiment" ]; then
+  # The binary reads its package files (the Nao's URDF) from the worktree: both must be there.
+  if [ ! -x "$base/devel/lib/rl_experiment/experiment" ] || [ ! -d "$base/src" ]; then
     start=$SECONDS
     echo "[compare] building $sha's experiment in $base (log: $base/build.log)" >&2
     [ -d "$base/src" ] || git -C "$ROOT" worktree add --detach "$base/src" "$sha" >&2
