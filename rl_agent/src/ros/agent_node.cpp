@@ -6,13 +6,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 
 #include "rl_agent/agent/agent_registry.h"
+#include "rl_agent/agent/model_based_agent.h"
 #include "rl_agent/agent/optimal_agent.h"
 #include "rl_agent/agent/reward_breakdown_source.h"
 #include "rl_agent/journal/journaling_agent.h"
+#include "rl_agent/model/model_predictions.h"
 
 // A "dropping ..." warning through the node's rate limit (rl_common::RateLimitedLog).
 #define RL_AGENT_DROP(stream)                        \
@@ -104,11 +107,13 @@ rl_common::EnvironmentDescription fromMessage(const rl_msgs::RLEnvDescription& m
 }
 
 AgentNode::AgentNode(ros::NodeHandle nh, const AgentOptions& options,
-                     std::unique_ptr<rl_common::Environment> trueModelEnv, JournalSettings journal)
+                     std::unique_ptr<rl_common::Environment> trueModelEnv, JournalSettings journal,
+                     std::string modelPredictions)
     : nh_(nh),
       options_(options),
       trueModelEnv_(std::move(trueModelEnv)),
-      journalSettings_(std::move(journal)) {
+      journalSettings_(std::move(journal)),
+      modelPredictions_(std::move(modelPredictions)) {
   if (trueModelEnv_) {
     trueModel_ = dynamic_cast<const rl_common::TrueModel*>(trueModelEnv_.get());
     if (trueModel_ == nullptr) {
@@ -154,12 +159,44 @@ AgentNode::AgentNode(ros::NodeHandle nh, const AgentOptions& options,
 }
 
 AgentNode::~AgentNode() {
+  saveModelPredictions();
   if (agent_ && !options_.filename.empty()) {
     try {
       agent_->savePolicy(options_.filename);
     } catch (const std::exception& e) {
-      ROS_ERROR_STREAM_NAMED("agent", "could not save the policy: " << e.what());
+      // ros::shutdown() has closed rosconsole by now (a ROS_ERROR here was never seen).
+      std::cerr << "agent: could not save the policy: " << e.what() << "\n";
     }
+  }
+}
+
+void AgentNode::noteState(const rl_common::State& s) {
+  if (modelPredictions_.empty() || seenStates_.size() >= kMaxPredictionStates) return;
+  seenStates_.insert(s);
+  if (seenStates_.size() == kMaxPredictionStates) {
+    ROS_WARN_STREAM_NAMED("agent", "--model-predictions: " << kMaxPredictionStates
+                                                           << " distinct states seen; later ones "
+                                                              "are not written");
+  }
+}
+
+void AgentNode::saveModelPredictions() const {
+  if (modelPredictions_.empty()) return;
+  // Written at shutdown, when ros::shutdown() has already closed rosconsole: said on stderr.
+  const auto* model = dynamic_cast<const ModelBasedAgent*>(core_);
+  if (model == nullptr || !description_) {
+    std::cerr << "agent: no learned model to write to '" << modelPredictions_
+              << "' (no environment description arrived, or the agent could not be built)\n";
+    return;
+  }
+  try {
+    const std::vector<rl_common::State> states(seenStates_.begin(), seenStates_.end());
+    rl_agent::saveModelPredictions(*model->learnedModelView(), states, description_->numActions,
+                                   modelPredictions_);
+    std::cerr << "agent: wrote the model's predictions for " << states.size() << " states to '"
+              << modelPredictions_ << "'\n";
+  } catch (const std::exception& e) {
+    std::cerr << "agent: could not write the model's predictions: " << e.what() << "\n";
   }
 }
 
@@ -184,6 +221,10 @@ void AgentNode::buildAgent() {
                                "the environment has " + std::to_string(features));
     }
     agent->seedExperiences(resume_->records);
+    for (const auto& e : resume_->records) {
+      noteState(e.s);
+      noteState(e.next);
+    }
     ROS_INFO_STREAM_NAMED("agent", "rebuilt the model from the " << resume_->records.size()
                                                                  << " experiences of journal '"
                                                                  << journalSettings_.resume << "'");
@@ -327,6 +368,7 @@ void AgentNode::onState(const rl_msgs::RLStateReward::ConstPtr& msg) {
 }
 
 void AgentNode::act(const rl_msgs::RLStateReward& state) {
+  noteState(state.state);
   if (state.terminal && !driver_->starting()) {
     const rl_common::EpisodeDriver::Episode e = driver_->end(state.reward, true, state.state);
     ROS_INFO_STREAM_NAMED("agent", "Episode " << e.index << " reward: " << e.reward);

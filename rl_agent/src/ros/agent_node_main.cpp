@@ -89,6 +89,11 @@ int runAgentNodeMain(int argc, char** argv, TrueModelSource* source, const std::
   parser.value("resume-journal", &journal.resume,
                "before acting, rebuild the agent's model from the experiences of this journal "
                "(e.g. the --journal of a killed node; a record cut by the kill is dropped)");
+  std::string modelPredictions;
+  parser.value("model-predictions", &modelPredictions,
+               "when the node shuts down, write the learned model's predictions (next-feature "
+               "distributions, reward, termination) for every action in each state the node has "
+               "seen to this CSV file; model-based agents without --history (empty: none)");
   std::unique_ptr<rl_common::Environment> trueModelEnv;
   const rl_common::NodeStart start = rl_common::startNode(
       parser, argc, argv, program,
@@ -99,6 +104,14 @@ int runAgentNodeMain(int argc, char** argv, TrueModelSource* source, const std::
         trueModelEnv = trueModelEnvironment(parser, options, source);
         if (!journal.resume.empty()) {
           readExperienceJournal(journal.resume);  // a missing or foreign file: exit 2 now
+        }
+        if (!modelPredictions.empty() &&
+            (!agentRegistry().hasFact(options.agent, kModelBasedFact) || options.history > 0)) {
+          throw std::invalid_argument(
+              "option --model-predictions needs a learned model queried by state alone: --agent " +
+              rl_common::joinNames(agentRegistry().namesWith(kModelBasedFact)) +
+              " with --history 0 (got --agent " + options.agent + ", --history " +
+              std::to_string(options.history) + ")");
         }
       },
       "\nValid agents: " + rl_common::joinNames(agentRegistry().names()) + "\n");
@@ -116,7 +129,8 @@ int runAgentNodeMain(int argc, char** argv, TrueModelSource* source, const std::
       return 2;
     }
   }
-  AgentNode node(ros::NodeHandle(), options, std::move(trueModelEnv), std::move(journal));
+  AgentNode node(ros::NodeHandle(), options, std::move(trueModelEnv), std::move(journal),
+                 modelPredictions);
   ros::spin();
   return node.failed() ? 1 : 0;
 }

@@ -7,13 +7,15 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
 namespace test_nodes {
 
 /// Starts `argv[0]` (a path, or a program on PATH such as rosrun) with its arguments; its
-/// stdout and stderr go to `log`. Returns the child's pid (-1 if fork failed).
+/// stdout and stderr go to `log`, a line at a time (so a test can wait for a log line). Returns
+/// the child's pid (-1 if fork failed).
 inline pid_t start(const std::vector<std::string>& args, const std::string& log) {
   const pid_t pid = ::fork();
   if (pid == 0) {
@@ -23,6 +25,7 @@ inline pid_t start(const std::vector<std::string>& args, const std::string& log)
     argv.push_back(nullptr);
     if (std::freopen(log.c_str(), "w", stdout) == nullptr) ::_exit(126);
     ::dup2(::fileno(stdout), 2);
+    ::setenv("ROSCONSOLE_STDOUT_LINE_BUFFERED", "1", 1);  // rosconsole buffers a file otherwise
     ::execvp(argv[0], argv.data());
     ::_exit(127);
   }

@@ -1,19 +1,30 @@
 // A SIGKILLed agent node resumes from its experience journal (agent_journal_resume.test).
 #include <gtest/gtest.h>
+#include <rl_msgs/RLEnvDescription.h>
 #include <ros/ros.h>
+#include <ros/topic.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <functional>
+#include <set>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "child_process.h"
+#include "rl_agent/agent/agent_options.h"
+#include "rl_agent/agent/agent_registry.h"
+#include "rl_agent/agent/model_based_agent.h"
 #include "rl_agent/journal/experience_journal.h"
+#include "rl_agent/model/model_predictions.h"
+#include "rl_agent/ros/agent_node.h"
+#include "rl_common/option_parser.h"
 
 namespace {
 
@@ -40,6 +51,35 @@ pid_t startAgent(const std::vector<std::string>& args, const std::string& log) {
   std::vector<std::string> all{AGENT_BIN, "__name:=agent"};
   all.insert(all.end(), args.begin(), args.end());
   return test_nodes::start(all, log);
+}
+
+/// The agent options the node parses from `args` (its --seed included).
+rl_agent::AgentOptions nodeOptions(const std::vector<std::string>& args) {
+  rl_agent::AgentOptions o;
+  rl_common::OptionParser p("test", "");
+  rl_agent::addAgentOptions(p, &o);
+  p.value("seed", &o.seed, "seed");
+  p.parse(args);
+  rl_agent::applyAgentDefaults(p, &o);
+  rl_agent::checkAgentOptions(p, o);
+  return o;
+}
+
+/// The env node's description, as the agent node converts it.
+rl_common::EnvironmentDescription envDescription() {
+  ros::NodeHandle nh;
+  const auto msg = ros::topic::waitForMessage<rl_msgs::RLEnvDescription>(
+      "rl_env/rl_env_description", nh, ros::Duration(30.0));
+  if (!msg) throw std::runtime_error("no description from the env node in 30 s");
+  return rl_agent::fromMessage(*msg);
+}
+
+std::string predictionsText(const rl_agent::ModelBasedAgent& agent,
+                            const std::set<rl_common::State>& states, int numActions) {
+  std::ostringstream out;
+  rl_agent::writeModelPredictions(*agent.learnedModelView(), {states.begin(), states.end()},
+                                  numActions, out);
+  return out.str();
 }
 
 }  // namespace
@@ -74,6 +114,58 @@ TEST(AgentNode, ResumesFromItsJournalAfterAKill) {
     ASSERT_EQ(killed.records[i].next, killed.records[i + 1].s) << "record " << i;
     ASSERT_FALSE(killed.records[i].terminal);
   }
+
+  // The model rebuilt from the journal predicts exactly as one that learned the same
+  // experiences without the kill. The reference is the killed run replayed in this process:
+  // the same options, seed and description, acting on the journal's states; that it chose
+  // every recorded action shows it is the same run. A probe node rebuilt from the journal
+  // hears no states (so learns nothing more) and writes its model when stopped.
+  const rl_common::EnvironmentDescription description = envDescription();
+  const std::vector<std::string> optionArgs(agent.begin(), agent.end() - 2);  // not --journal
+  auto replayed = rl_agent::makeAgent(nodeOptions(optionArgs), description);
+  ASSERT_EQ(replayed->firstAction(killed.records[0].s), killed.records[0].action);
+  for (std::size_t i = 1; i < k; ++i) {
+    ASSERT_EQ(replayed->nextAction(killed.records[i - 1].reward, killed.records[i].s),
+              killed.records[i].action)
+        << "step " << i << ": the replay is not the killed run";
+  }
+  replayed->nextAction(killed.records[k - 1].reward, killed.records[k - 1].next);
+  std::set<rl_common::State> states;
+  for (const auto& e : killed.records) {
+    states.insert(e.s);
+    states.insert(e.next);
+  }
+  const auto* online = dynamic_cast<const rl_agent::ModelBasedAgent*>(replayed.get());
+  ASSERT_NE(online, nullptr);
+  const std::string expected = predictionsText(*online, states, description.numActions);
+  const auto empty = rl_agent::makeAgent(nodeOptions(optionArgs), description);
+  ASSERT_NE(predictionsText(dynamic_cast<const rl_agent::ModelBasedAgent&>(*empty), states,
+                            description.numActions),
+            expected)
+      << "the comparison is of learned models, not of empty ones";
+
+  const std::string predictions = dir + "/resumed-predictions.csv";
+  std::vector<std::string> probeArgs = optionArgs;
+  probeArgs.insert(probeArgs.end(),
+                   {"--resume-journal", journal, "--model-predictions", predictions,
+                    "rl_env/rl_state_reward:=rl_env/probe_no_states"});
+  const pid_t probe = startAgent(probeArgs, dir + "/probe.log");
+  ASSERT_GT(probe, 0);
+  const std::string rebuilt = "rebuilt the model from the " + std::to_string(k) + " experiences";
+  const bool built = waitFor(
+      [&] { return test_nodes::fileText(dir + "/probe.log").find(rebuilt) != std::string::npos; },
+      30.0);
+  ::kill(probe, SIGINT);
+  ASSERT_EQ(::waitpid(probe, &status, 0), probe);
+  const std::string probeLog = test_nodes::fileText(dir + "/probe.log");
+  ASSERT_TRUE(built) << probeLog;
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << probeLog;
+  const std::string written = test_nodes::fileText(predictions);
+  EXPECT_EQ(std::count(written.begin(), written.end(), '\n'),
+            1 + static_cast<long>(states.size()) * description.numActions);
+  EXPECT_TRUE(written == expected)
+      << "the resumed node's model differs from the one that learned without the kill\n"
+      << probeLog;
 
   std::vector<std::string> resume = agent;
   resume.insert(resume.end(), {"--resume-journal", journal});

@@ -25,6 +25,11 @@
  * node builds (at a description, or by the reset service between trials) learns that
  * journal's experiences, as read at the first build, before it acts. Both may be one file: a
  * resumed node goes on writing the journal it was rebuilt from.
+ *
+ * Model predictions (model/model_predictions.h): with `modelPredictions` set, a model-based
+ * agent's learned model is written to that file when the node shuts down, for every action in
+ * each distinct state the node has seen (the resumed journal's and those it acted on, at most
+ * kMaxPredictionStates).
  */
 #pragma once
 
@@ -69,6 +74,9 @@ struct JournalSettings {
   JournalHeader header;
 };
 
+/// The most distinct states whose predictions `--model-predictions` writes (the first seen).
+constexpr std::size_t kMaxPredictionStates = 100000;
+
 class AgentNode {
  public:
   /// `trueModelEnv`: for `optimal`, the node's own copy of the env node's environment (it
@@ -76,7 +84,7 @@ class AgentNode {
   /// std::invalid_argument if it is given but has no true model.
   AgentNode(ros::NodeHandle nh, const AgentOptions& options,
             std::unique_ptr<rl_common::Environment> trueModelEnv = nullptr,
-            JournalSettings journal = {});
+            JournalSettings journal = {}, std::string modelPredictions = "");
   ~AgentNode();
 
   /// True after a fatal error (a description that does not match the true model); the node
@@ -95,6 +103,8 @@ class AgentNode {
 
  private:
   void buildAgent();
+  void noteState(const rl_common::State& s);
+  void saveModelPredictions() const;
   bool validState(const std::vector<float>& s, const char* what) const;
 
   ros::NodeHandle nh_;
@@ -107,7 +117,9 @@ class AgentNode {
   rl_common::Agent* core_ = nullptr;         ///< the agent itself (agent_ or the one it wraps)
   JournalSettings journalSettings_;
   std::shared_ptr<ExperienceJournalWriter> journal_;
-  std::optional<JournalContents> resume_;           ///< the resume journal, read at the first build
+  std::optional<JournalContents> resume_;  ///< the resume journal, read at the first build
+  std::string modelPredictions_;           ///< where the model goes at shutdown (empty: nowhere)
+  std::set<rl_common::State> seenStates_;  ///< kept only with modelPredictions_
   std::optional<rl_common::EpisodeDriver> driver_;  ///< drives agent_ through its episodes
   long steps_ = 0;
   std::vector<rl_msgs::RLEnvSeedExperience::ConstPtr> earlySeeds_;  ///< before any description
