@@ -21,17 +21,24 @@ std::vector<std::vector<std::string>> rowsOf(const std::string& path) {
   return rl_experiment::parseCsv(rl_experiment::readFile(path));
 }
 
-// TEXPLORE-VANIR with a small synchronous budget, for fast deterministic tests.
-std::unique_ptr<rl_common::Agent> vanir(const rl_common::EnvironmentDescription& d,
-                                        std::uint64_t seed) {
+/// The agent of these command-line options.
+std::unique_ptr<rl_common::Agent> agentOf(const std::vector<std::string>& args,
+                                          const rl_common::EnvironmentDescription& d,
+                                          std::uint64_t seed) {
   rl_agent::AgentOptions o;
   rl_common::OptionParser p("test", "");
   rl_agent::addAgentOptions(p, &o);
-  p.parse(
-      std::vector<std::string>{"--agent", "texplore", "--v", "1", "--n", "3", "--rollouts", "10"});
+  p.parse(args);
   rl_agent::applyAgentDefaults(p, &o);
+  rl_agent::checkAgentOptions(p, o);
   o.seed = seed;
   return rl_agent::makeAgent(o, d);
+}
+
+// TEXPLORE-VANIR with a small synchronous budget, for fast deterministic tests.
+std::unique_ptr<rl_common::Agent> vanir(const rl_common::EnvironmentDescription& d,
+                                        std::uint64_t seed) {
+  return agentOf({"--agent", "texplore", "--v", "1", "--n", "3", "--rollouts", "10"}, d, seed);
 }
 
 }  // namespace
@@ -111,4 +118,37 @@ TEST(TrialLogger, WritesStepsEpisodesAccuracyAndSummary) {
     EXPECT_NO_THROW(std::stod(l));
   }
   EXPECT_EQ(lines, 50);
+}
+
+// The accuracy log is of every model kind, not of the tree forests alone (R-MAX's tabular model
+// and the M5 regression trees logged none).
+TEST(TrialLogger, EveryModelKindLogsItsAccuracy) {
+  const std::vector<std::vector<std::string>> agents{
+      {"--agent", "rmax"},
+      {"--agent", "modelbased", "--model", "tabular", "--planner", "vi"},
+      {"--agent", "modelbased", "--model", "m5tree", "--rollouts", "10"},
+      {"--agent", "texplore", "--rollouts", "10"}};
+  for (const auto& args : agents) {
+    const std::string dir = tempDir();
+    rl_env::LightWorld env(3, true);
+    auto agent = agentOf(args, env.describe(), 5);
+    rl_experiment::TrialLimits limits;
+    limits.exploreSteps = 60;
+    limits.checkpointEvery = 30;
+    rl_experiment::TrialInfo info{0, args[1], args[1], "lightworld", 5, 3, 9};
+    rl_experiment::TrialLogger logger(dir, info, rl_experiment::EvalSettings{200, {}}, false,
+                                      nullptr);
+    const auto summary = rl_experiment::TrialRunner(limits).run(env, *agent, &logger);
+    logger.finish(summary, 1.0, 1024);
+    const auto acc = rowsOf(dir + "/accuracy-000.csv");
+    const std::string what = args[1] + (args.size() > 3 ? " " + args[3] : "");
+    ASSERT_EQ(acc.size(), 4u) << what;  // header + steps 0, 30, 60
+    for (std::size_t i = 1; i < acc.size(); ++i) {
+      const double vd = std::stod(acc[i][3]);
+      EXPECT_GE(vd, 0.0) << what;
+      EXPECT_LE(vd, 1.0) << what;
+    }
+    // Measured on the model as it learns, not on a fixed one.
+    EXPECT_NE(acc[1][3], acc[3][3]) << what;
+  }
 }

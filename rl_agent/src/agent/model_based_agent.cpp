@@ -574,6 +574,7 @@ std::shared_ptr<const ExplorationModel::View> ModelBasedAgent::modelView() const
 std::shared_ptr<const rl_common::ModelView> ModelBasedAgent::learnedModelView() const {
   if (exploration_ != nullptr) {
     const auto view = modelView();
+    if (view == nullptr) return nullptr;
     return std::shared_ptr<const rl_common::ModelView>(view, &view->model());
   }
   // Tabular and M5 views: the optimism of R-MAX changes reward and termination only.

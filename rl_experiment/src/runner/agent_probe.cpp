@@ -59,12 +59,10 @@ long giveTaskRewards(rl_common::Agent& agent, const std::vector<float>& stepRewa
 }
 
 std::shared_ptr<const rl_common::ModelView> learnedModelOf(const rl_common::Agent& agent) {
+  // Every model kind (trees, tabular, m5tree, R-MAX's): its predictions without intrinsic
+  // bonuses or optimism in the transitions.
   if (const auto* mb = dynamic_cast<const rl_agent::ModelBasedAgent*>(&core(agent))) {
-    const auto view = mb->modelView();
-    if (view == nullptr) return nullptr;
-    // The inner factored model: predictions without the intrinsic bonuses (the transitions are
-    // the same either way).
-    return std::shared_ptr<const rl_common::ModelView>(view, &view->model());
+    return mb->learnedModelView();
   }
   return nullptr;
 }
