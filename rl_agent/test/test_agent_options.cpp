@@ -99,8 +99,12 @@ TEST(AgentOptions, OriginalBugsFixed) {
 
 TEST(AgentOptions, ValuesAreValidated) {
   EXPECT_NE(errorOf({"--gamma", "1.5"}).find("must be in [0, 1]"), std::string::npos);
-  EXPECT_NE(errorOf({"--planner", "astar"}).find("valid values: vi, valueiteration"),
-            std::string::npos);
+  // The planner registry's names, each with its other spellings.
+  const std::string planner = errorOf({"--planner", "astar"});
+  EXPECT_NE(planner.find("valid values: delayed-parallel-uct, delayedparalleluct, "),
+            std::string::npos)
+      << planner;
+  EXPECT_NE(planner.find("uct, vi, valueiteration"), std::string::npos) << planner;
   EXPECT_NE(errorOf({"--nmodels", "0"}).find("must be in [1, 1000]"), std::string::npos);
   // Values that would exhaust memory or plan one step for hours are refused up front.
   EXPECT_NE(errorOf({"--nmodels", "1000000000"}).find("must be in [1, 1000]"), std::string::npos);

@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "rl_agent/agent/agent_registry.h"
+#include "rl_agent/model/model_registry.h"
+#include "rl_agent/planner/planner_registry.h"
 #include "rl_agent/reward/explorer_registry.h"
 #include "rl_common/registry.h"
 
@@ -24,40 +26,16 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
   p.value("lambda", &o->lambda, "UCT(lambda) mixing or Sarsa(lambda) trace decay",
           inRange(0.0f, 1.0f));
   p.value("m", &o->m, "visits before a state-action is known (R-MAX)", atLeast(0));
-  p.aliasedChoice("model", &o->model,
-                  {{"tabular", "tabular"},
-                   {"tree", "tree"},
-                   {"c45tree", "tree"},
-                   {"texplore", "tree"},
-                   {"m5tree", "m5tree"}},
-                  "model type");
-  p.choice("explore", &o->explore,
-           {"unknown", "greedy", "epsilongreedy", "unvisitedstates", "unvisitedactions",
-            "variancenovelty", "random", "competence", "prederror", "boltzmann"},
-           "exploration type");
+  // The component names come from their registries (with the original's other spellings).
+  p.aliasedChoice("model", &o->model, modelRegistry().spellings(), "model type");
+  p.choice("explore", &o->explore, explorerRegistry().names(), "exploration type");
   p.aliasedChoice("combo|modelcombo", &o->combo,
                   {{"average", "average"},
                    {"weighted", "weighted"},
                    {"best", "best"},
                    {"separate", "separate"}},
                   "how a forest combines its trees");
-  p.aliasedChoice("planner", &o->planner,
-                  {{"vi", "vi"},
-                   {"valueiteration", "vi"},
-                   {"pi", "pi"},
-                   {"policyiteration", "pi"},
-                   {"sweeping", "sweeping"},
-                   {"prioritizedsweeping", "sweeping"},
-                   {"uct", "uct"},
-                   {"parallel-uct", "parallel-uct"},
-                   {"paralleluct", "parallel-uct"},
-                   {"realtimeuct", "parallel-uct"},
-                   {"realtime-uct", "parallel-uct"},
-                   {"delayed-uct", "delayed-uct"},
-                   {"delayeduct", "delayed-uct"},
-                   {"delayed-parallel-uct", "delayed-parallel-uct"},
-                   {"delayedparalleluct", "delayed-parallel-uct"}},
-                  "planner");
+  p.aliasedChoice("planner", &o->planner, plannerRegistry().spellings(), "planner");
   // Upper bounds keep a typo from exhausting memory or planning for hours in one step.
   p.value("nmodels", &o->nmodels, "trees per forest", inRange(1, 1000));
   p.flag("reltrans", &o->reltrans, true, "predict relative changes s'-s (default)");
@@ -227,21 +205,21 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
   }
   const bool modelBased = isOneOf(o.agent, modelBasedList);
   if (modelBased) {
-    const bool searchPlanner = o.planner != "vi" && o.planner != "pi" && o.planner != "sweeping";
+    const bool searchPlanner = plannerRegistry().hasFact(o.planner, kSearchPlannerFact);
     for (const char* option : {"actrate", "lambda", "history", "rollouts", "pathvisits", "ucb",
                                "ucbc", "bonusonce", "taskucb", "taskucbc", "depth", "minprob"}) {
       if (p.given(option) && !searchPlanner) {
-        throw rl_common::OptionError(std::string("option --") + option +
-                                     " needs a UCT planner (uct, parallel-uct, delayed-uct, "
-                                     "delayed-parallel-uct), not '" +
-                                     o.planner + "'");
+        throw rl_common::OptionError(
+            std::string("option --") + option + " needs a UCT planner (" +
+            rl_common::joinNames(plannerRegistry().namesWith(kSearchPlannerFact)) + "), not '" +
+            o.planner + "'");
       }
     }
-    if (p.given("searchthreads") &&
-        (o.rollouts > 0 || (o.planner != "parallel-uct" && o.planner != "delayed-parallel-uct"))) {
+    const std::vector<std::string> realTime = plannerRegistry().namesWith(kRealTimePlannerFact);
+    if (p.given("searchthreads") && (o.rollouts > 0 || !isOneOf(o.planner, realTime))) {
       throw rl_common::OptionError(
-          "option --searchthreads needs the real-time planner (--planner parallel-uct or "
-          "delayed-parallel-uct, without --rollouts)");
+          "option --searchthreads needs the real-time planner (--planner " +
+          rl_common::joinNames(realTime, " or ") + ", without --rollouts)");
     }
     if (p.given("defer") && o.defer > 0 && o.history > 0) {
       throw rl_common::OptionError(
@@ -275,20 +253,11 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
     if (p.given("tau") && o.explore != "boltzmann") {
       throw rl_common::OptionError("option --tau needs --explore boltzmann");
     }
-    const std::vector<std::string> selectionOnly = explorerRegistry().namesWith(kSelectionOnlyFact);
-    if (o.model == "tabular" && !isOneOf(o.explore, selectionOnly) && o.explore != "unknown") {
-      throw rl_common::OptionError("option --explore " + o.explore +
-                                   " is not available with --model tabular; valid: " +
-                                   rl_common::joinNames(selectionOnly) + ", unknown");
-    }
-    if (o.model == "m5tree" && !isOneOf(o.explore, selectionOnly)) {
-      throw rl_common::OptionError(
-          "option --explore " + o.explore +
-          " is not available with --model m5tree; valid: " + rl_common::joinNames(selectionOnly));
-    }
-    if (o.model == "m5tree" && !searchPlanner && !binsStates(o)) {
-      throw rl_common::OptionError("--model m5tree with --planner " + o.planner +
-                                   " needs --nstates > 0 (the planner's state grid)");
+    try {
+      checkModelExplorer(o.model, o.explore);
+      checkModelGrid(o.model, o.planner, searchPlanner, binsStates(o));
+    } catch (const std::invalid_argument& e) {
+      throw rl_common::OptionError(e.what());
     }
     if (o.agent == "rmax" && o.explore != "unknown") {
       throw rl_common::OptionError("--agent rmax needs --explore unknown");

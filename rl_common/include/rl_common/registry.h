@@ -106,6 +106,19 @@ class Registry {
     return out;
   }
 
+  /// Every spelling `create` accepts with its canonical name (for an option that takes any of
+  /// them): each canonical name, sorted, followed by its aliases.
+  std::vector<std::pair<std::string, std::string>> spellings() const {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const auto& e : entries_) {
+      out.emplace_back(e.first, e.first);
+      for (const auto& a : aliases_) {
+        if (a.second == e.first) out.emplace_back(a.first, e.first);
+      }
+    }
+    return out;
+  }
+
   const std::string& description(const std::string& name) const {
     return entries_.at(canonical(name)).description;
   }

@@ -26,7 +26,9 @@
  *       by the --taskkey features, the last --taskrecent observed states serving as their
  *       entries' representatives. UCT's rollouts from one state rarely reach a reward three
  *       subgoals away (key, lock, door); a sweep over the imagined states does.
- * Two ways to run UCT:
+ * Components come from their registries (modelRegistry, plannerRegistry, explorerRegistry) and
+ * the planner's entry builds the PlanningLoop that learns and plans between actions. Two ways
+ * to run UCT:
  *   - real time (the default, `--planner parallel-uct`, `--rollouts 0`): model learning and
  *     planning run in their own threads while the agent acts at `--actrate` Hz;
  *   - synchronous (`--rollouts N`, or `--planner uct`): each step learns from the last
@@ -45,21 +47,22 @@
 #pragma once
 
 #include <cstdint>
-#include <deque>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "rl_agent/agent/action_selector.h"
 #include "rl_agent/agent/agent_options.h"
+#include "rl_agent/agent/experience_log.h"
 #include "rl_agent/agent/irreversible_step.h"
+#include "rl_agent/agent/model_based_config.h"
 #include "rl_agent/agent/reward_breakdown_source.h"
 #include "rl_agent/model/exploration_model.h"
-#include "rl_agent/model/tabular_model.h"
-#include "rl_agent/planner/real_time_planner.h"
+#include "rl_agent/model/model_registry.h"
+#include "rl_agent/planner/planning_loop.h"
 #include "rl_agent/planner/state_grid.h"
-#include "rl_agent/planner/state_space_planner.h"
-#include "rl_agent/planner/uct_planner.h"
-#include "rl_agent/reward/explorer_registry.h"
+#include "rl_agent/planner/task_phase_planner.h"
 #include "rl_common/agent.h"
 #include "rl_common/environment.h"
 #include "rl_common/random.h"
@@ -68,9 +71,13 @@ namespace rl_agent {
 
 class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
  public:
-  /// Builds the agent for a task from the agent options (after applyAgentDefaults). Throws
-  /// std::invalid_argument for a model, planner or explore type it does not offer, or a
-  /// combination that does not work (e.g. competence with a tabular model).
+  using Config = ModelBasedConfig;
+
+  /// Builds the agent for a task. Throws std::invalid_argument for a model, planner or explore
+  /// type it does not offer, or a combination that does not work (e.g. competence with a
+  /// tabular model).
+  ModelBasedAgent(const Config& config, const rl_common::EnvironmentDescription& task);
+  /// The same from the agent options (after applyAgentDefaults): modelBasedConfig(options).
   ModelBasedAgent(const AgentOptions& options, const rl_common::EnvironmentDescription& task);
   ~ModelBasedAgent() override;
 
@@ -78,10 +85,8 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   int nextAction(float reward, const rl_common::State& s) override;
   void lastAction(float reward) override;
   void seedExperiences(const std::vector<rl_common::Experience>& seeds) override;
-  /// Writes Q-values in the original's policy-file format (PolicyFile), for `savedpolicy` to
-  /// act greedily on: with vi/pi/sweeping those of every state the planner knows; with a UCT
-  /// planner those of every state in its table (states binned with --nstates; with --history
-  /// the values under the state's most visited action history). Throws as PolicyFile::write.
+  /// Writes Q-values in the original's policy-file format (PolicyFile, policyTable()), for
+  /// `savedpolicy` to act greedily on. Throws as PolicyFile::write.
   void savePolicy(const std::string& filename) override;
 
   RewardBreakdown lastRewardBreakdown() const override { return lastBreakdown_; }
@@ -95,7 +100,7 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   /// Keeps every experience (seeds and steps) from now on, for relabelRewards(). Off by
   /// default: the log grows with every step. Throws std::logic_error if the agent has learned
   /// from experiences already (a rebuilt model would lose them).
-  void recordExperiences(bool on);
+  void recordExperiences(bool on) { log_.record(on); }
   /// Gives the agent a task's reward function after a reward-free phase, as the paper's
   /// explore-then-task protocol ("provided with a reward function for a task", §5.1):
   /// `rewards[i]` replaces the reward of the i-th recorded step experience (seeds keep
@@ -106,7 +111,7 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   /// std::invalid_argument unless there is one reward per recorded step experience.
   void relabelRewards(const std::vector<float>& rewards);
   /// Step experiences recorded so far (see recordExperiences()).
-  std::size_t recordedSteps() const { return recordedSteps_; }
+  std::size_t recordedSteps() const { return log_.steps(); }
   /// The tree model's current view (for evaluation); thread-safe. Null for tabular and m5tree
   /// models: use learnedModelView().
   std::shared_ptr<const ExplorationModel::View> modelView() const;
@@ -122,67 +127,40 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   /// Seconds the last step spent updating the model (synchronous mode; 0 in real time, where
   /// a thread of its own learns) and choosing the action (planning, or waiting for its due
   /// time in real time).
-  double lastLearnSeconds() const { return lastLearnSeconds_; }
+  double lastLearnSeconds() const { return loop_->lastLearnSeconds(); }
   double lastPlanSeconds() const { return lastPlanSeconds_; }
-  bool realTime() const { return realTime_ != nullptr; }
+  bool realTime() const { return loop_->realTime(); }
+  const Config& config() const { return config_; }
 
  private:
-  /// Gives the UCT planner the bound of the current phase (--ucb exploring, --taskucb not).
+  /// Gives the search planners the UCB bound of the current phase (--ucb exploring, --taskucb
+  /// not).
   void applyUcbBound();
-  ExplorerSettings explorerSettings() const;
-  /// A new, empty model of the configured type (sets exploration_, tabular_ and modelPtr_).
-  std::unique_ptr<rl_common::MDPModel> makeModel();
+  /// A new, empty model of the configured type, with `explorer`'s rewards and learners.
+  LearnedModel makeModel(const Explorer& explorer) const;
   int chooseAction(const rl_common::State& s);
+  /// The planner's action at `s` (model input `input`), due at `due`.
+  int planAction(const rl_common::State& s, const rl_common::State& input,
+                 PlanningLoop::Clock::time_point due);
   void learn(const rl_common::Experience& e);
-  rl_common::State binned(const rl_common::State& s) const;
   rl_common::State modelInput(const rl_common::State& s);
-  std::shared_ptr<const rl_common::ModelView> currentView() const;
-  std::vector<double> plannerValues(const rl_common::State& s);
-  /// --taskplanner vi: plans the task step at `s` by value iteration on the learned model;
-  /// returns the greedy action.
-  int planTaskStep(const rl_common::State& s);
-  bool taskPlannerActive() const { return !exploring_ && options_.taskplanner == "vi"; }
+  bool taskPlannerActive() const { return !exploring_ && taskPhase_.has_value(); }
 
-  AgentOptions options_;
+  Config config_;
   rl_common::EnvironmentDescription task_;
   rl_common::Random rng_;
-  bool epsilonGreedy_ = false;
-  bool randomActions_ = false;
-  bool boltzmann_ = false;
+  ActionSelector selector_;
   bool exploring_ = true;  ///< false after setIntrinsicEnabled(false): act greedily
-  float tau_ = 0.2f;
-  StateGrid grid_;  ///< --nstates binning of the inputs (none for m5tree)
-  // Synchronous mode owns model and planner; real-time mode hands them to realTime_ and keeps
-  // raw pointers for the few calls that need them (under RealTimePlanner's access rules).
-  std::unique_ptr<rl_common::MDPModel> model_;
-  std::unique_ptr<rl_common::Planner> planner_;
-  rl_common::MDPModel* modelPtr_ = nullptr;
-  ExplorationModel* exploration_ = nullptr;  ///< the model, when it is a tree model
-  TabularModel* tabular_ = nullptr;          ///< the model, when it is tabular
-  UctPlanner* uct_ = nullptr;                ///< the planner, when it is UCT (sync mode)
-  StateSpacePlanner* dp_ = nullptr;          ///< the planner, when it is vi/pi/sweeping
-  std::unique_ptr<RealTimePlanner> realTime_;
-  // --taskplanner vi: the last task step's planner (kept for its values) and the task steps
-  // planned so far (each planner's seed derives from it).
-  std::unique_ptr<StateSpacePlanner> taskPlanner_;
-  std::uint64_t taskSteps_ = 0;
-  std::deque<rl_common::State> recentStates_;  ///< the last --taskrecent states observed
-  struct Recorded {
-    rl_common::Experience experience;  ///< as the model learned it (binned, with history)
-    bool step = false;                 ///< false for a seed
-  };
-  bool recording_ = false;
-  std::size_t learned_ = 0;  ///< experiences (seeds and steps) handed to the model
-  std::vector<Recorded> recorded_;
-  std::size_t recordedSteps_ = 0;
+  StateGrid grid_;         ///< --nstates binning of the inputs (none for m5tree)
+  LearnedModel model_;     ///< its switches (the model itself is owned by loop_)
+  std::unique_ptr<PlanningLoop> loop_;
+  std::optional<TaskPhasePlanner> taskPhase_;  ///< --taskplanner vi
+  ExperienceLog log_;
   std::vector<int> history_;
   rl_common::State lastInput_;
   int lastAction_ = -1;
   long lastRollouts_ = 0;
   std::unique_ptr<StepDeferral> deferral_;  ///< --defer: one-way steps put off
-  const void* deferralKey_ = nullptr;       ///< the planner's deferring view (planningKey)
-  bool modelPending_ = false;  ///< --defer, synchronous: learn() left setModel to chooseAction
-  double lastLearnSeconds_ = 0.0;
   double lastPlanSeconds_ = 0.0;
   RewardBreakdown lastBreakdown_;
 };
