@@ -102,6 +102,17 @@ TEST(ModelBasedAgent, HistoryAndSeedsAreAccepted) {
   std::size_t expected = 1;  // the seed
   for (int n : lengths) expected += n > 60 ? 60 : n;
   EXPECT_EQ(agent.modelView()->model().numExperiences(), expected);
+
+  // The learned model answers a state alone (an accuracy probe's query) as after no recorded
+  // actions: the input seeds get (1 feature, then 2 x 3 all-zero action codes).
+  const auto learned = agent.learnedModelView();
+  const State none{6.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
+  const auto alone = learned->query({6.0f}, 1);
+  const auto full = learned->query(none, 1);
+  EXPECT_EQ(alone.factored, full.factored);
+  EXPECT_FLOAT_EQ(alone.termProb, full.termProb);
+  EXPECT_FLOAT_EQ(alone.reward, full.reward);
+  EXPECT_FLOAT_EQ(alone.reward, agent.modelView()->model().query(none, 1).reward);
 }
 
 TEST(ModelBasedAgent, RealTimeAgentActsAtItsRateAndStopsCleanly) {

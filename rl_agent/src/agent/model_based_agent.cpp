@@ -5,6 +5,7 @@
 
 #include "rl_agent/agent/policy_export.h"
 #include "rl_agent/agent/policy_file.h"
+#include "rl_agent/model/no_history_view.h"
 #include "rl_agent/planner/planner_registry.h"
 
 namespace rl_agent {
@@ -227,13 +228,19 @@ std::shared_ptr<const ExplorationModel::View> ModelBasedAgent::modelView() const
 }
 
 std::shared_ptr<const rl_common::ModelView> ModelBasedAgent::learnedModelView() const {
+  std::shared_ptr<const rl_common::ModelView> learned;
   if (model_.exploration != nullptr) {
     const auto view = modelView();
     if (view == nullptr) return nullptr;
-    return std::shared_ptr<const rl_common::ModelView>(view, &view->model());
+    learned = std::shared_ptr<const rl_common::ModelView>(view, &view->model());
+  } else {
+    // Tabular and M5 views: the optimism of R-MAX changes reward and termination only.
+    learned = loop_->latestView();
   }
-  // Tabular and M5 views: the optimism of R-MAX changes reward and termination only.
-  return loop_->latestView();
+  if (config_.history == 0 || learned == nullptr) return learned;
+  return std::make_shared<NoHistoryView>(
+      std::move(learned), task_.minFeatures.size(),
+      static_cast<std::size_t>(config_.history * task_.numActions));
 }
 
 void ModelBasedAgent::savePolicy(const std::string& filename) {

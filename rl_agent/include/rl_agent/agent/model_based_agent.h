@@ -116,7 +116,8 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   /// models: use learnedModelView().
   std::shared_ptr<const ExplorationModel::View> modelView() const;
   /// The learned model's current view without intrinsic bonuses, for every model type (for
-  /// model-accuracy evaluation); thread-safe.
+  /// model-accuracy evaluation); thread-safe. With --history it takes states alone, as after
+  /// no recorded actions (NoHistoryView), as well as full inputs.
   std::shared_ptr<const rl_common::ModelView> learnedModelView() const;
   /// Rollouts (UCT) or solver iterations (vi/pi/sweeping) planned for the last action.
   long lastRollouts() const { return lastRollouts_; }
