@@ -28,6 +28,7 @@ APT_PACKAGES=(
   libeigen3-dev libnanoflann-dev liburdfdom-dev liburdf-dev libopencv-dev
   libcv-bridge-dev liburdfdom-tools python3-sensor-msgs
   python3-matplotlib python3-numpy python3-rosbag
+  slurmctld slurmd slurm-client munge
 )
 
 log() { printf '\033[1m[rl]\033[0m %s\n' "$*" >&2; }

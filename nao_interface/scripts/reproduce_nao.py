@@ -101,6 +101,58 @@ def import_stats():
     return stats
 
 
+def run_command(args, exe, name, agent, task):
+    """The runner's options of one strategy on one task (without the trials, jobs and folder)."""
+    cmd = [exe, *agent, "--env", "naoarm", "--task", task,
+           "--explore-steps", str(args.explore_steps), "--task-steps", str(args.task_steps),
+           "--rollouts", str(args.rollouts), "--seed", str(args.seed), "--eval-every", "0",
+           "--label", name, "--lambda", repr(args.lam), "--task-rewards", args.task_rewards]
+    if args.nstates != "none":
+        cmd += ["--nstates", args.nstates]
+    return cmd
+
+
+def submit_to_slurm(args, exe, raw_argv):
+    """One job array (a task per strategy, task and block of trials), then a job after it that
+    reruns this script with --collect: merge each run folder, then the figures and the table."""
+    import slurm_sweep
+    tasks = []
+    for name, agent in STRATEGIES.items():
+        for task in TASKS:
+            out = os.path.join(os.path.abspath(args.out), "runs", f"{name}-{task}")
+            if os.path.exists(os.path.join(out, "trials.csv")):
+                print(f"[reproduce nao] {name} / {task}: done before, kept ({out})", flush=True)
+                continue
+            tasks += slurm_sweep.plan_tasks(out, run_command(args, os.path.abspath(exe), name,
+                                                             agent, task),
+                                            0, args.trials,
+                                            args.trials_per_task or args.cpus_per_task,
+                                            args.cpus_per_task)
+    sweep = os.path.join(os.path.abspath(args.out), "slurm")
+    array = slurm_sweep.submit_array(sweep, "rl-nao", tasks, args) if tasks else None
+    collect = slurm_sweep.strip_slurm_arguments(raw_argv) + ["--collect", "--out",
+                                                             os.path.abspath(args.out)]
+    command = "RL_EXPERIMENT=%s %s %s %s" % (
+        slurm_sweep.shlex.quote(os.path.abspath(exe)), slurm_sweep.PYTHON,
+        slurm_sweep.shlex.quote(os.path.abspath(__file__)),
+        " ".join(slurm_sweep.shlex.quote(a) for a in collect))
+    report = slurm_sweep.submit_after(sweep, "rl-nao-report", command, [array], args)
+    print(f"[reproduce nao] submitted: array job {array or 'none'} ({len(tasks)} tasks), "
+          f"then the report job {report} (merge, figures, results.md)", flush=True)
+    print(slurm_sweep.follow_hint(sweep, [array, report]), flush=True)
+
+
+def merge_slurm_parts(args):
+    import slurm_sweep
+    for name in STRATEGIES:
+        for task in TASKS:
+            out = os.path.join(args.out, "runs", f"{name}-{task}")
+            if os.path.isdir(slurm_sweep.parts_dir(out)):
+                n = slurm_sweep.merge(os.path.abspath(out))
+                print(f"[reproduce nao] {name} / {task}: merged {n} trials of its Slurm tasks",
+                      flush=True)
+
+
 def run_all(args, exe):
     for name, agent in STRATEGIES.items():
         for task in TASKS:
@@ -108,14 +160,9 @@ def run_all(args, exe):
             if os.path.exists(os.path.join(out, "trials.csv")):
                 print(f"[reproduce nao] {name} / {task}: done before, kept ({out})", flush=True)
                 continue
-            cmd = [exe, *agent, "--env", "naoarm", "--task", task,
-                   "--explore-steps", str(args.explore_steps), "--task-steps", str(args.task_steps),
-                   "--rollouts", str(args.rollouts), "--trials", str(args.trials),
-                   "--jobs", str(args.jobs), "--seed", str(args.seed), "--eval-every", "0",
-                   "--label", name, "--out", out, "--force", "--progress", "off"]
-            cmd += ["--lambda", repr(args.lam), "--task-rewards", args.task_rewards]
-            if args.nstates != "none":
-                cmd += ["--nstates", args.nstates]
+            cmd = run_command(args, exe, name, agent, task) + [
+                "--trials", str(args.trials), "--jobs", str(args.jobs), "--out", out, "--force",
+                "--progress", "off"]
             print(f"[reproduce nao] {name} / {task}: {' '.join(cmd)}", flush=True)
             subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
 
@@ -330,6 +377,9 @@ def main():
     p.add_argument("--nstates", default=NAO_STATES,
                    help=f"the agents' bins per feature (default {NAO_STATES}); 'none' learns "
                         "and plans on the continuous states")
+    stats = import_stats()  # also puts rl_experiment's scripts (slurm_sweep) on the path
+    import slurm_sweep
+    slurm_sweep.add_slurm_arguments(p)
     args = p.parse_args()
     quick = dict(trials=6, explore_steps=400, task_steps=100, rollouts=100)
     full = dict(trials=13, explore_steps=400, task_steps=200, rollouts=100)
@@ -340,7 +390,11 @@ def main():
         args.out = os.path.join(os.getcwd(), "results", "nao-quick" if args.quick else "nao")
     os.makedirs(args.out, exist_ok=True)
     exe = find_experiment()
-    stats = import_stats()
+    if args.slurm and not args.collect:
+        submit_to_slurm(args, exe, sys.argv[1:])
+        return
+    if args.collect:
+        merge_slurm_parts(args)
     run_all(args, exe)
     res = analyse(args)
     figs = plot(args, res)

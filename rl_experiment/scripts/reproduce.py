@@ -41,6 +41,8 @@ import subprocess
 import sys
 import time
 
+import slurm_sweep
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 PAPER_OPTIMAL_TASK_REWARD = 1800.6  # the paper's optimal policy over the 3000 task steps
 # LightWorld's ns, ew, have_key, door_open and room_id: what --task-planner vi tells apart (the
@@ -160,6 +162,44 @@ def trial_seconds(folder):
         return sum(float(r["seconds"]) for r in csv.DictReader(f) if r.get("seconds"))
 
 
+def submit_to_slurm(args, raw_argv, exe, out, experiments, wanted, common, trials, log):
+    """One Slurm job array per experiment (a task per agent and block of trials), then one job
+    after all of them that reruns this script with --collect: it merges each agent's tasks into
+    its run folder and draws the figures and tables exactly as a local run does."""
+    out = os.path.abspath(out)
+    arrays = []
+    for name, what, variants, opts, _ in experiments:
+        if name not in wanted:
+            continue
+        tasks = []
+        for label, agent_opts in variants:
+            folder = os.path.join(out, name, label)
+            if finished_trials(folder) >= trials:
+                log("  %s/%-20s done already" % (name, label))
+                continue
+            if name == "explore-task":
+                agent_opts = with_task_planner(exe, agent_opts, args.task_planner)
+            tasks += slurm_sweep.plan_tasks(folder, [os.path.abspath(exe)] + agent_opts + common
+                                            + opts + ["--label", label], 0, trials,
+                                            args.trials_per_task or args.cpus_per_task,
+                                            args.cpus_per_task)
+        if tasks:
+            arrays.append(slurm_sweep.submit_array(os.path.join(out, "slurm", name),
+                                                   "rl-lightworld-" + name, tasks, args, log))
+    collect = [a for a in slurm_sweep.strip_slurm_arguments(raw_argv)] + ["--collect",
+                                                                          "--out", out]
+    command = "RL_EXPERIMENT=%s %s %s %s" % (
+        slurm_sweep.shlex.quote(os.path.abspath(exe)), slurm_sweep.PYTHON,
+        slurm_sweep.shlex.quote(os.path.abspath(__file__)),
+        " ".join(slurm_sweep.shlex.quote(a) for a in collect))
+    report = slurm_sweep.submit_after(os.path.join(out, "slurm"), "rl-lightworld-report",
+                                      command, arrays, args)
+    log("submitted: %d job arrays (%s), then the report job %s (merges, figures, results.md)"
+        % (len([a for a in arrays if a]), ", ".join(a for a in arrays if a) or "none", report))
+    log(slurm_sweep.follow_hint(os.path.join(out, "slurm", "<experiment>"), arrays + [report]))
+    return 0
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0],
                                  formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -194,6 +234,8 @@ def main(argv=None):
                          "trials of some agents to a finished run's --out)")
     ap.add_argument("--list", action="store_true",
                     help="print each experiment's agents and their options, then exit")
+    slurm_sweep.add_slurm_arguments(ap)
+    raw_argv = sys.argv[1:] if argv is None else list(argv)
     args = ap.parse_args(argv)
 
     if args.quick:
@@ -243,8 +285,9 @@ def main(argv=None):
                      out))
     agents = agent_variants(exe, rollouts, log, planner_opts)
     log("agents: " + ", ".join(label for label, _ in agents))
-    common = ["--env", "lightworld", "--trials", str(trials), "--seed", str(args.seed),
-              "--jobs", str(args.jobs), "--eval-samples", str(samples), "--progress", "off"]
+    # --trials and --jobs come last: a Slurm task replaces them with its own block's.
+    common = ["--env", "lightworld", "--seed", str(args.seed), "--eval-samples", str(samples)]
+    local = ["--trials", str(trials), "--jobs", str(args.jobs), "--progress", "off"]
     experiments = [
         ("explore-task", "Figs. 4-6: %d exploration steps, then %d task steps" % (explore, task),
          agents, ["--explore-steps", str(explore), "--task-steps", str(task),
@@ -263,6 +306,9 @@ def main(argv=None):
     failures = 0
     # Each experiment's table gives p-values against TEXPLORE-VANIR (`reference`); if its runs
     # failed, plot_results.py falls back to its default (texplore-vanir, else the first label).
+    if args.slurm and not args.collect:
+        return submit_to_slurm(args, raw_argv, exe, out, experiments, wanted, common, trials,
+                               log)
     for name, what, variants, opts, reference in experiments:
         if name not in wanted:
             continue
@@ -272,7 +318,11 @@ def main(argv=None):
             folder = os.path.join(out, name, label)
             if name == "explore-task":
                 agent_opts = with_task_planner(exe, agent_opts, args.task_planner)
-            cmd = [exe] + agent_opts + common + opts + ["--label", label, "--out", folder]
+            cmd = ([exe] + agent_opts + common + opts + ["--label", label] + local
+                   + ["--out", folder])
+            if args.collect and os.path.isdir(slurm_sweep.parts_dir(folder)):
+                log("  %-20s merged %d trials of its Slurm tasks"
+                    % (label, slurm_sweep.merge(folder, " ".join(cmd))))
             if finished_trials(folder) >= trials:
                 log("  %-20s done already" % label)
                 folders.append(folder)

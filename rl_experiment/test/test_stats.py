@@ -439,8 +439,7 @@ class _Recorder(unittest.TextTestResult):
         self._record(test, "skipped", reason)
 
 
-def write_xunit(path, result):
-    suite = "rl_experiment.test_stats"
+def write_xunit(path, result, suite="rl_experiment.test_stats"):
     failures = sum(1 for c in result.cases if c[1] == "failure")
     errors = sum(1 for c in result.cases if c[1] == "error")
     os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
