@@ -130,12 +130,7 @@ def submit_to_slurm(args, exe, raw_argv):
                                             args.cpus_per_task)
     sweep = os.path.join(os.path.abspath(args.out), "slurm")
     array = slurm_sweep.submit_array(sweep, "rl-nao", tasks, args) if tasks else None
-    collect = slurm_sweep.strip_slurm_arguments(raw_argv) + ["--collect", "--out",
-                                                             os.path.abspath(args.out)]
-    command = "RL_EXPERIMENT=%s %s %s %s" % (
-        slurm_sweep.shlex.quote(os.path.abspath(exe)), slurm_sweep.PYTHON,
-        slurm_sweep.shlex.quote(os.path.abspath(__file__)),
-        " ".join(slurm_sweep.shlex.quote(a) for a in collect))
+    command = slurm_sweep.collect_command(exe, __file__, raw_argv, os.path.abspath(args.out))
     report = slurm_sweep.submit_after(sweep, "rl-nao-report", command, [array], args)
     print(f"[reproduce nao] submitted: array job {array or 'none'} ({len(tasks)} tasks), "
           f"then the report job {report} (merge, figures, results.md)", flush=True)

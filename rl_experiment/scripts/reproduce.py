@@ -186,12 +186,7 @@ def submit_to_slurm(args, raw_argv, exe, out, experiments, wanted, common, trial
         if tasks:
             arrays.append(slurm_sweep.submit_array(os.path.join(out, "slurm", name),
                                                    "rl-lightworld-" + name, tasks, args, log))
-    collect = [a for a in slurm_sweep.strip_slurm_arguments(raw_argv)] + ["--collect",
-                                                                          "--out", out]
-    command = "RL_EXPERIMENT=%s %s %s %s" % (
-        slurm_sweep.shlex.quote(os.path.abspath(exe)), slurm_sweep.PYTHON,
-        slurm_sweep.shlex.quote(os.path.abspath(__file__)),
-        " ".join(slurm_sweep.shlex.quote(a) for a in collect))
+    command = slurm_sweep.collect_command(exe, __file__, raw_argv, out)
     report = slurm_sweep.submit_after(os.path.join(out, "slurm"), "rl-lightworld-report",
                                       command, arrays, args)
     log("submitted: %d job arrays (%s), then the report job %s (merges, figures, results.md)"

@@ -302,6 +302,15 @@ def strip_slurm_arguments(argv):
     return out
 
 
+def collect_command(exe, script, argv, out):
+    """The report job's shell line: `script` rerun with argv minus the Slurm options, plus
+    --collect, on the same runner."""
+    args = strip_slurm_arguments(argv) + ["--collect", "--out", out]
+    return "RL_EXPERIMENT=%s %s %s %s" % (shlex.quote(os.path.abspath(exe)), PYTHON,
+                                         shlex.quote(os.path.abspath(script)),
+                                         " ".join(shlex.quote(a) for a in args))
+
+
 def cmd_submit(argv):
     ap = argparse.ArgumentParser(prog="slurm_sweep.py submit")
     ap.add_argument("--exe", required=True, help="the experiment runner")
