@@ -98,7 +98,7 @@ void addBuiltinEnvironments(EnvironmentCatalog& catalog) {
           return std::make_unique<LightWorld>(seed, o.stochastic);
         },
         "the TEXPLORE-VANIR paper's 4-room key/lock/door world with light sensors",
-        {kTrueModelFact});
+        {kTrueModelFact, kRenderFact});
 }
 
 void EnvironmentCatalog::addOption(ExtraOption option) {
@@ -123,6 +123,10 @@ std::unique_ptr<rl_common::Environment> EnvironmentCatalog::make(
 
 std::string EnvironmentCatalog::trueModelNames() const {
   return rl_common::joinNames(registry_.namesWith(kTrueModelFact));
+}
+
+std::string EnvironmentCatalog::renderNames() const {
+  return rl_common::joinNames(registry_.namesWith(kRenderFact));
 }
 
 const EnvironmentCatalog& builtinEnvironments() {

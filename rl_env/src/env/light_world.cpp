@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "env_detail.h"
+#include "rl_env/render/light_world_view.h"
 
 namespace rl_env {
 
@@ -160,6 +161,10 @@ LightWorld::Objects LightWorld::objects() const {
   o.lock = r.lock;
   o.door = r.door;
   return o;
+}
+
+RgbImage LightWorld::render(int lastAction) const {
+  return LightWorldView::render(state_, lastAction);
 }
 
 void LightWorld::reset() {

@@ -12,12 +12,23 @@ int runEnvironmentNodeMain(int argc, char** argv, const EnvironmentCatalog& cata
   EnvironmentOptions options;
   options.env = defaultEnv;
   bool prints = false;
+  bool render = false;
   rl_common::OptionParser parser(program, "--env <type> [options]");
   addEnvironmentOptions(parser, &options, catalog);
   parser.flag("prints", &prints, true, "log every action, the first two features and reward");
+  parser.flag("render", &render, true,
+              "publish rl_env/image, the environment drawn after every step (environments: " +
+                  catalog.renderNames() + ")");
   const rl_common::NodeStart start = rl_common::startNode(
       parser, argc, argv, program,
-      [&] { checkEnvironmentOptions(parser, options, catalog); },  // validates --env too
+      [&] {
+        checkEnvironmentOptions(parser, options, catalog);  // validates --env too
+        if (render && !catalog.registry().hasFact(options.env, kRenderFact)) {
+          throw rl_common::OptionError(
+              "--render: " + options.env +
+              " has no rendered view; environments with one: " + catalog.renderNames());
+        }
+      },
       "\nValid environments: " + rl_common::joinNames(catalog.registry().names()) + "\n");
   if (!start) return start.exitCode;
   try {
@@ -29,7 +40,7 @@ int runEnvironmentNodeMain(int argc, char** argv, const EnvironmentCatalog& cata
           o.seed = seed;
           return catalog.make(o);
         },
-        options.seed, prints);
+        options.seed, prints, render);
     ros::spin();
   } catch (const std::exception& e) {
     ROS_FATAL_STREAM_NAMED(program, e.what());

@@ -1,7 +1,10 @@
 #include "rl_env/ros/environment_node.h"
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
+
+#include "rl_env/render/renderable.h"
 
 namespace rl_env {
 
@@ -29,9 +32,27 @@ rl_msgs::RLEnvSeedExperience toMessage(const rl_common::Experience& e) {
   return m;
 }
 
+sensor_msgs::Image toMessage(const RgbImage& image) {
+  sensor_msgs::Image m;
+  m.height = static_cast<uint32_t>(image.height());
+  m.width = static_cast<uint32_t>(image.width());
+  m.encoding = "rgb8";
+  m.is_bigendian = 0;
+  m.step = static_cast<uint32_t>(image.rowBytes());
+  m.data = image.bytes();
+  return m;
+}
+
 EnvironmentNode::EnvironmentNode(ros::NodeHandle nh, Factory factory, std::uint64_t seed,
-                                 bool prints)
-    : nh_(nh), factory_(std::move(factory)), env_(factory_(seed)), prints_(prints) {
+                                 bool prints, bool render)
+    : nh_(nh),
+      factory_(std::move(factory)),
+      env_(factory_(seed)),
+      prints_(prints),
+      render_(render) {
+  if (render_ && dynamic_cast<const Renderable*>(env_.get()) == nullptr) {
+    throw std::invalid_argument("render: " + env_->name() + " has no rendered view");
+  }
   const auto description = toMessage(env_->describe());
   const std::size_t nseeds = env_->seedExperiences().size();
   descriptionPub_ = nh_.advertise<rl_msgs::RLEnvDescription>("rl_env/rl_env_description", 1,
@@ -50,6 +71,12 @@ EnvironmentNode::EnvironmentNode(ros::NodeHandle nh, Factory factory, std::uint6
   infoSub_ = nh_.subscribe("rl_agent/rl_experiment_info", kQueue,
                            &EnvironmentNode::onExperimentInfo, this, hints);
   resetSrv_ = nh_.advertiseService("rl_env/reset", &EnvironmentNode::onReset, this);
+  // A viewer that connects gets the current state drawn at once (and then every step).
+  if (render_) {
+    imagePub_ = nh_.advertise<sensor_msgs::Image>(
+        "rl_env/image", 2,
+        [this](const ros::SingleSubscriberPublisher& pub) { pub.publish(imageMessage()); });
+  }
   descriptionPub_.publish(description);
   ROS_INFO_STREAM_NAMED(
       "env", "serving " << description.title.substr(0, description.title.size() - 1) << ": "
@@ -97,6 +124,21 @@ void EnvironmentNode::publishState(float reward) {
   m.reward = reward;
   m.terminal = env_->terminal();
   statePub_.publish(m);
+  publishImage();
+}
+
+sensor_msgs::Image EnvironmentNode::imageMessage() {
+  const auto& view = dynamic_cast<const Renderable&>(*env_);  // checked in the constructor
+  sensor_msgs::Image m = toMessage(view.render(lastAction_));
+  m.header.seq = imageSeq_++;
+  m.header.stamp = ros::Time::now();
+  m.header.frame_id = "rl_env";
+  return m;
+}
+
+void EnvironmentNode::publishImage() {
+  // Drawing costs more than a step of most environments: only for a listener.
+  if (render_ && imagePub_.getNumSubscribers() > 0) imagePub_.publish(imageMessage());
 }
 
 void EnvironmentNode::onAction(const rl_msgs::RLAction::ConstPtr& msg) {
@@ -108,6 +150,7 @@ void EnvironmentNode::onAction(const rl_msgs::RLAction::ConstPtr& msg) {
     return;
   }
   const float r = env_->apply(a);
+  lastAction_ = a;
   ++steps_;
   if (prints_) {
     const auto& s = env_->sensation();
@@ -123,6 +166,7 @@ void EnvironmentNode::onExperimentInfo(const rl_msgs::RLExperimentInfo::ConstPtr
                                           << msg->episode_reward << " after " << msg->number_actions
                                           << " actions; resetting");
   env_->reset();
+  lastAction_ = -1;
   publishState(0.0f);
 }
 
@@ -139,6 +183,7 @@ bool EnvironmentNode::onReset(rl_msgs::Reset::Request& req, rl_msgs::Reset::Resp
     return true;
   }
   steps_ = 0;
+  lastAction_ = -1;
   res.success = true;
   res.message = req.use_seed ? "reset with seed " + std::to_string(req.seed) : "reset";
   ROS_INFO_STREAM_NAMED("env", res.message);

@@ -13,6 +13,7 @@
 #include "rl_common/environment.h"
 #include "rl_common/registry.h"
 #include "rl_env/env/environment_options.h"
+#include "rl_env/render/renderable.h"
 
 namespace rl_env {
 
@@ -41,6 +42,8 @@ class EnvironmentCatalog {
 
   /// The environments with a true model, "a, b, c" (for messages and help texts).
   std::string trueModelNames() const;
+  /// The environments with a rendered view (kRenderFact), "a, b, c".
+  std::string renderNames() const;
 
  private:
   EnvironmentRegistry registry_{"environment"};

@@ -18,7 +18,8 @@
  * non-episodic, reward in [0, 10].
  *
  * Beyond the original, LightWorld is a rl_common::TrueModel: exact transition distributions,
- * the set of reachable states and setState(), for model-accuracy evaluation and planning.
+ * the set of reachable states and setState(), for model-accuracy evaluation and planning; and
+ * Renderable: an image of the current room for watching a run (render/light_world_view.h).
  */
 #pragma once
 
@@ -30,10 +31,11 @@
 #include "rl_common/environment.h"
 #include "rl_common/random.h"
 #include "rl_common/true_model.h"
+#include "rl_env/render/renderable.h"
 
 namespace rl_env {
 
-class LightWorld : public rl_common::Environment, public rl_common::TrueModel {
+class LightWorld : public rl_common::Environment, public rl_common::TrueModel, public Renderable {
  public:
   enum Action { kNorth = 0, kEast = 1, kWest = 2, kSouth = 3, kPickup = 4, kPress = 5 };
   enum Feature {
@@ -131,6 +133,10 @@ class LightWorld : public rl_common::Environment, public rl_common::TrueModel {
   /// door, entry cell) with each possible (have_key, door_open) and key cell.
   std::vector<rl_common::State> reachableStates() const override;
   void setState(const rl_common::State& s) override;
+
+  // Renderable
+  /// The current room from above (LightWorldView).
+  RgbImage render(int lastAction) const override;
 
   /// The complete current state.
   const FullState& fullState() const { return state_; }
