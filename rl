@@ -27,7 +27,8 @@ APT_PACKAGES=(
   libboost-program-options-dev libgtest-dev libgmock-dev libbenchmark-dev
   libeigen3-dev libnanoflann-dev liburdfdom-dev liburdf-dev libopencv-dev
   libcv-bridge-dev liburdfdom-tools python3-sensor-msgs
-  python3-matplotlib python3-numpy python3-rosbag
+  ros-visualization-msgs libvisualization-msgs-dev python3-visualization-msgs
+  python3-matplotlib python3-numpy python3-rosbag pybind11-dev python3-dev
   slurmctld slurmd slurm-client munge
 )
 

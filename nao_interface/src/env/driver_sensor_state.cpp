@@ -56,7 +56,8 @@ void DriverSensorState::onAudio(const std::vector<std::uint8_t>& channelMap,
   }
   const auto front = std::find(channelMap.begin(), channelMap.end(), kFrontCenter);
   const int channel = front == channelMap.end() ? 0 : static_cast<int>(front - channelMap.begin());
-  micMax_ = std::max(micMax_, audioEnergy(data, static_cast<int>(channelMap.size()), channel));
+  lastEnergy_ = audioEnergy(data, static_cast<int>(channelMap.size()), channel);
+  micMax_ = std::max(micMax_, lastEnergy_);
   audioTime_ = t;
 }
 

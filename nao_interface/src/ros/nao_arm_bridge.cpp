@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "nao_interface/ros/nao_arm_markers.h"
+
 namespace nao_interface {
 
 namespace {
@@ -30,6 +32,9 @@ void addBridgeOptions(rl_common::OptionParser& parser, NaoArmBridgeOptions* o) {
                rl_common::greaterThan(0.0));
   parser.flag("no-audio", &o->needAudio, false, "do not wait for audio (NAOqi >= 2.9)");
   parser.value("driver-ns", &o->driverNs, "namespace of the driver's topics");
+  parser.value("cymbal-threshold", &o->cymbal.threshold,
+               "microphone energy above which a sound is a cymbal hit (rviz markers)",
+               rl_common::atLeast(0.0));
   parser.value("urdf", &o->robot.urdf, "URDF of the seated Nao (for the hand position)");
   parser.value("start-pitch", &o->robot.startPitch, "RShoulderPitch of the start pose (rad)");
   parser.value("start-roll", &o->robot.startRoll, "RShoulderRoll of the start pose (rad)");
@@ -40,6 +45,7 @@ NaoArmBridge::NaoArmBridge(ros::NodeHandle nh, const NaoArmBridgeOptions& option
       task_(parseNaoArmTask(options.task)),
       body_(NaoBody::fromUrdfFile(options.robot.urdf)),
       sensors_(seatedPosture(options.robot)),
+      cymbal_(options.cymbal),
       nh_(nh) {
   rl_msgs::RLEnvDescription d;
   std::vector<float> mn, mx;
@@ -64,6 +70,8 @@ NaoArmBridge::NaoArmBridge(ros::NodeHandle nh, const NaoArmBridgeOptions& option
   statePub_ = nh_.advertise<rl_msgs::RLStateReward>("rl_env/rl_state_reward", 1, true);
   commandPub_ = nh_.advertise<naoqi_bridge_msgs::JointAnglesWithSpeed>("joint_angles", 10);
   micPub_ = pnh.advertise<naoqi_bridge_msgs::FloatStamped>("mic_energy", 10);
+  maskPub_ = pnh.advertise<sensor_msgs::Image>("pink_mask", 1);
+  markerPub_ = pnh.advertise<visualization_msgs::MarkerArray>("markers", 1);
   actionSub_ = nh_.subscribe("rl_agent/rl_action", 1, &NaoArmBridge::onAction, this, hints);
   infoSub_ =
       nh_.subscribe("rl_agent/rl_experiment_info", 1, &NaoArmBridge::onExperimentInfo, this, hints);
@@ -75,6 +83,8 @@ NaoArmBridge::NaoArmBridge(ros::NodeHandle nh, const NaoArmBridgeOptions& option
   descriptionPub_.publish(d);
   timer_ =
       nh_.createWallTimer(ros::WallDuration(0.01), [this](const ros::WallTimerEvent&) { poll(); });
+  markerTimer_ = nh_.createWallTimer(ros::WallDuration(0.1),
+                                     [this](const ros::WallTimerEvent&) { publishMarkers(); });
   ROS_INFO_STREAM_NAMED("nao_arm_bridge", "Nao arm task '"
                                               << options_.task << "' at " << options_.rate
                                               << " Hz; waiting for the driver and an agent");
@@ -92,7 +102,15 @@ void NaoArmBridge::onImage(const sensor_msgs::Image::ConstPtr& msg) {
   try {
     const cv_bridge::CvImageConstPtr bgr =
         cv_bridge::toCvShare(msg, sensor_msgs::image_encodings::BGR8);
-    sensors_.onPinkCount(detector_.count(bgr->image), wallNow());
+    if (maskPub_.getNumSubscribers() == 0) {
+      sensors_.onPinkCount(detector_.count(bgr->image), wallNow());
+      return;
+    }
+    // Someone watches the mask (rviz): count the pixels of the very mask it shows.
+    cv_bridge::CvImage mask(msg->header, sensor_msgs::image_encodings::MONO8,
+                            detector_.mask(bgr->image));
+    sensors_.onPinkCount(cv::countNonZero(mask.image), wallNow());
+    maskPub_.publish(mask.toImageMsg());
   } catch (const std::exception& e) {
     ROS_WARN_STREAM_THROTTLE_NAMED(5.0, "nao_arm_bridge",
                                    "dropping camera image (" << msg->encoding << "): " << e.what());
@@ -110,10 +128,25 @@ void NaoArmBridge::onBumper(const naoqi_bridge_msgs::Bumper::ConstPtr& msg) {
 
 void NaoArmBridge::onAudio(const naoqi_bridge_msgs::AudioBuffer::ConstPtr& msg) {
   try {
-    sensors_.onAudio(msg->channelMap, msg->data, wallNow());
+    const double now = wallNow();
+    sensors_.onAudio(msg->channelMap, msg->data, now);
+    if (cymbal_.onEnergy(sensors_.lastAudioEnergy(), now)) {
+      ROS_DEBUG_STREAM_NAMED("nao_arm_bridge",
+                             "cymbal hit (microphone energy " << sensors_.lastAudioEnergy() << ")");
+    }
   } catch (const std::invalid_argument& e) {
     ROS_WARN_STREAM_THROTTLE_NAMED(5.0, "nao_arm_bridge", "dropping audio buffer: " << e.what());
   }
+}
+
+void NaoArmBridge::publishMarkers() {
+  if (markerPub_.getNumSubscribers() == 0) return;
+  NaoArmMarkerState state;
+  state.bumperPressed = sensors_.bumperPressed();
+  state.cymbalFlash = cymbal_.flash(wallNow());
+  state.cymbalHits = cymbal_.hits();
+  state.cymbalRadius = options_.robot.cymbalRadius;
+  markerPub_.publish(naoArmMarkers(state));
 }
 
 void NaoArmBridge::sendTargets() {

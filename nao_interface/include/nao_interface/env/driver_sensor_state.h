@@ -52,6 +52,8 @@ class DriverSensorState {
   /// The latest joint angles (posture joints filled in).
   const JointAngles& angles() const { return angles_; }
   bool bumperPressed() const { return bumper_; }
+  /// The energy of the latest audio buffer (0 before the first).
+  double lastAudioEnergy() const { return lastEnergy_; }
 
  private:
   JointAngles angles_;
@@ -59,6 +61,7 @@ class DriverSensorState {
   int pink_ = 0;
   bool bumper_ = false;
   double micMax_ = 0.0;
+  double lastEnergy_ = 0.0;
 };
 
 }  // namespace nao_interface

@@ -6,7 +6,11 @@
  *   publishes  rl_env/rl_env_description (latched: 8 features, 5 actions, the task's reward
  *              range, non-episodic), rl_env/rl_seed (no seeds), rl_env/rl_state_reward
  *              (latched), /joint_angles (absolute shoulder targets), ~mic_energy
- *              (naoqi_bridge_msgs/FloatStamped, per step)
+ *              (naoqi_bridge_msgs/FloatStamped, per step), and for rviz, only while someone
+ *              subscribes: ~pink_mask (sensor_msgs/Image mono8, 255 = pink: the detector's
+ *              mask of each camera image, with the image's header) and ~markers
+ *              (visualization_msgs/MarkerArray at 10 Hz: the foot bumper, red while pressed,
+ *              and the cymbal, flashing on a hit heard by the microphone; nao_arm_markers.h)
  *   subscribes rl_agent/rl_action, rl_agent/rl_experiment_info (moves the arm back to the
  *              start pose, as the original env resets), /joint_states,
  *              /<driver-ns>/camera/front/image_raw, /<driver-ns>/bumper, /<driver-ns>/audio
@@ -33,6 +37,7 @@
 #include <string>
 
 #include "nao_interface/camera/pink_detector.h"
+#include "nao_interface/env/cymbal_hit_detector.h"
 #include "nao_interface/env/driver_sensor_state.h"
 #include "nao_interface/env/nao_arm_task.h"
 #include "nao_interface/kinematics/nao_body.h"
@@ -49,7 +54,8 @@ struct NaoArmBridgeOptions {
   double resetTime = 3.0;        ///< seconds allowed for the arm to return to the start pose
   bool needAudio = true;         ///< wait for audio (a real driver on NAOqi >= 2.9 has none)
   std::string driverNs = "naoqi_driver";
-  NaoArmSimConfig robot;  ///< URDF, start pose and seated posture (only those fields are used)
+  CymbalHitOptions cymbal;  ///< when the microphone's energy counts as a cymbal hit (rviz)
+  NaoArmSimConfig robot;    ///< URDF, start pose and seated posture (only those fields are used)
 };
 
 /// Declares the bridge's options (--task, --rate, --speed, --max-age, ...).
@@ -74,17 +80,19 @@ class NaoArmBridge {
  private:
   void sendTargets();
   void startReset();
+  void publishMarkers();
 
   NaoArmBridgeOptions options_;
   NaoArmTask task_;
   NaoBody body_;
   PinkDetector detector_;
   DriverSensorState sensors_;
+  CymbalHitDetector cymbal_;
   ros::NodeHandle nh_;
-  ros::Publisher descriptionPub_, seedPub_, statePub_, commandPub_, micPub_;
+  ros::Publisher descriptionPub_, seedPub_, statePub_, commandPub_, micPub_, maskPub_, markerPub_;
   ros::Subscriber actionSub_, infoSub_, jointSub_, imageSub_, bumperSub_, audioSub_;
   ros::ServiceServer resetSrv_;
-  ros::WallTimer timer_;
+  ros::WallTimer timer_, markerTimer_;
   Eigen::Vector2d targets_ = Eigen::Vector2d::Zero();
   bool started_ = false;    ///< the first state went out
   bool pending_ = false;    ///< a step (or reset) waits for its state
