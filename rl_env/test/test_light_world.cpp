@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "light_world_states.h"
 #include "true_model_checks.h"
 
 namespace {
@@ -20,16 +21,7 @@ using rl_env::LightWorld;
 using Cell = LightWorld::Cell;
 using FullState = LightWorld::FullState;
 
-FullState at(int room, int ns, int ew, bool haveKey, bool doorOpen, Cell key = Cell{}) {
-  FullState s;
-  s.room = room;
-  s.ns = ns;
-  s.ew = ew;
-  s.haveKey = haveKey;
-  s.doorOpen = doorOpen;
-  s.key = key;
-  return s;
-}
+using rl_env::testing::lightWorldState;
 
 // The full state after applying `action` to `from` in a deterministic LightWorld.
 FullState after(const FullState& from, int action, float* reward = nullptr) {
@@ -85,18 +77,18 @@ TEST(LightWorld, RoomTableAndEntryCells) {
 
 TEST(LightWorld, SensorsComputedByHand) {
   // Room 0, agent (3,2), key (5,4) on the floor, lock (2,6), door (5,6) closed.
-  const State s = LightWorld::observe(at(0, 3, 2, false, false, {5, 4}));
+  const State s = LightWorld::observe(lightWorldState(0, 3, 2, false, false, {5, 4}));
   // ns, ew, have_key, door_open, room | key N E W S | lock N E W S | door N E W S (off: closed)
   const State expected = {3, 2, 0, 0, 0, 8, 8, 0, 0, 0, 6, 0, 9, 0, 0, 0, 0};
   EXPECT_EQ(s, expected);
 
   // Key held and door open: key lights off, door lights on. Door (5,6) from (3,2).
-  const State open = LightWorld::observe(at(0, 3, 2, true, true));
+  const State open = LightWorld::observe(lightWorldState(0, 3, 2, true, true));
   const State expectedOpen = {3, 2, 1, 1, 0, 0, 0, 0, 0, 0, 6, 0, 9, 8, 6, 0, 0};
   EXPECT_EQ(open, expectedOpen);
 
   // An object on the agent's own cell lights all four of its sensors at 10.
-  const State onKey = LightWorld::observe(at(3, 2, 3, false, false, {2, 3}));
+  const State onKey = LightWorld::observe(lightWorldState(3, 2, 3, false, false, {2, 3}));
   EXPECT_EQ((State{onKey[5], onKey[6], onKey[7], onKey[8]}), (State{10, 10, 10, 10}));
   // Room 3, lock (0,4) seen from (2,3): S = 10 - 2, E = 10 - 1.
   EXPECT_EQ((State{onKey[9], onKey[10], onKey[11], onKey[12]}), (State{0, 9, 0, 8}));
@@ -104,68 +96,73 @@ TEST(LightWorld, SensorsComputedByHand) {
 
 TEST(LightWorld, WallsBlockMovesWithoutReward) {
   float r = -1.0f;
-  expectAt(after(at(0, 1, 3, false, false, {4, 4}), LightWorld::kSouth, &r), 0, 1, 3);
+  expectAt(after(lightWorldState(0, 1, 3, false, false, {4, 4}), LightWorld::kSouth, &r), 0, 1, 3);
   EXPECT_EQ(r, 0.0f);
-  expectAt(after(at(0, 6, 3, false, false, {4, 4}), LightWorld::kNorth), 0, 6, 3);
-  expectAt(after(at(0, 3, 1, false, false, {4, 4}), LightWorld::kWest), 0, 3, 1);
-  expectAt(after(at(0, 3, 5, false, false, {4, 4}), LightWorld::kEast), 0, 3, 5);
+  expectAt(after(lightWorldState(0, 6, 3, false, false, {4, 4}), LightWorld::kNorth), 0, 6, 3);
+  expectAt(after(lightWorldState(0, 3, 1, false, false, {4, 4}), LightWorld::kWest), 0, 3, 1);
+  expectAt(after(lightWorldState(0, 3, 5, false, false, {4, 4}), LightWorld::kEast), 0, 3, 5);
   // Interior moves: NORTH is ns + 1, EAST is ew + 1.
-  expectAt(after(at(0, 3, 3, false, false, {4, 4}), LightWorld::kNorth), 0, 4, 3);
-  expectAt(after(at(0, 3, 3, false, false, {4, 4}), LightWorld::kSouth), 0, 2, 3);
-  expectAt(after(at(0, 3, 3, false, false, {4, 4}), LightWorld::kEast), 0, 3, 4);
-  expectAt(after(at(0, 3, 3, false, false, {4, 4}), LightWorld::kWest), 0, 3, 2);
+  expectAt(after(lightWorldState(0, 3, 3, false, false, {4, 4}), LightWorld::kNorth), 0, 4, 3);
+  expectAt(after(lightWorldState(0, 3, 3, false, false, {4, 4}), LightWorld::kSouth), 0, 2, 3);
+  expectAt(after(lightWorldState(0, 3, 3, false, false, {4, 4}), LightWorld::kEast), 0, 3, 4);
+  expectAt(after(lightWorldState(0, 3, 3, false, false, {4, 4}), LightWorld::kWest), 0, 3, 2);
 }
 
 TEST(LightWorld, LockAndDoorCellsInTheWallCanBeEnteredButNotWalkedAlong) {
   const Cell key{4, 4};
   // Room 0: lock (2,6) and door (5,6) in the east wall.
-  expectAt(after(at(0, 2, 5, false, false, key), LightWorld::kEast), 0, 2, 6);
-  expectAt(after(at(0, 2, 6, false, false, key), LightWorld::kNorth), 0, 2, 6);
-  expectAt(after(at(0, 2, 6, false, false, key), LightWorld::kSouth), 0, 2, 6);
-  expectAt(after(at(0, 2, 6, false, false, key), LightWorld::kEast), 0, 2, 6);
-  expectAt(after(at(0, 2, 6, false, false, key), LightWorld::kWest), 0, 2, 5);
-  expectAt(after(at(0, 5, 5, false, false, key), LightWorld::kEast), 0, 5, 6);
+  expectAt(after(lightWorldState(0, 2, 5, false, false, key), LightWorld::kEast), 0, 2, 6);
+  expectAt(after(lightWorldState(0, 2, 6, false, false, key), LightWorld::kNorth), 0, 2, 6);
+  expectAt(after(lightWorldState(0, 2, 6, false, false, key), LightWorld::kSouth), 0, 2, 6);
+  expectAt(after(lightWorldState(0, 2, 6, false, false, key), LightWorld::kEast), 0, 2, 6);
+  expectAt(after(lightWorldState(0, 2, 6, false, false, key), LightWorld::kWest), 0, 2, 5);
+  expectAt(after(lightWorldState(0, 5, 5, false, false, key), LightWorld::kEast), 0, 5, 6);
   // A closed door does not let the agent out.
   float r = -1.0f;
-  const FullState closed = after(at(0, 5, 6, true, false), LightWorld::kEast, &r);
+  const FullState closed = after(lightWorldState(0, 5, 6, true, false), LightWorld::kEast, &r);
   expectAt(closed, 0, 5, 6);
   EXPECT_EQ(r, 0.0f);
   // Room 1: lock (0,3) in the south wall.
-  expectAt(after(at(1, 1, 3, false, false, {2, 2}), LightWorld::kSouth), 1, 0, 3);
-  expectAt(after(at(1, 0, 3, false, false, {2, 2}), LightWorld::kEast), 1, 0, 3);
-  expectAt(after(at(1, 0, 3, false, false, {2, 2}), LightWorld::kWest), 1, 0, 3);
-  expectAt(after(at(1, 0, 3, false, false, {2, 2}), LightWorld::kNorth), 1, 1, 3);
+  expectAt(after(lightWorldState(1, 1, 3, false, false, {2, 2}), LightWorld::kSouth), 1, 0, 3);
+  expectAt(after(lightWorldState(1, 0, 3, false, false, {2, 2}), LightWorld::kEast), 1, 0, 3);
+  expectAt(after(lightWorldState(1, 0, 3, false, false, {2, 2}), LightWorld::kWest), 1, 0, 3);
+  expectAt(after(lightWorldState(1, 0, 3, false, false, {2, 2}), LightWorld::kNorth), 1, 1, 3);
   // Room 3: door (5,2) in the north wall.
-  expectAt(after(at(3, 4, 2, true, false), LightWorld::kNorth), 3, 5, 2);
+  expectAt(after(lightWorldState(3, 4, 2, true, false), LightWorld::kNorth), 3, 5, 2);
   // A wall cell that is neither lock nor door stays out of reach: room 3, (4,3) NORTH.
-  expectAt(after(at(3, 4, 3, true, false), LightWorld::kNorth), 3, 4, 3);
+  expectAt(after(lightWorldState(3, 4, 3, true, false), LightWorld::kNorth), 3, 4, 3);
 }
 
 TEST(LightWorld, PickupOnlyOnTheKey) {
-  const FullState onKey = after(at(0, 3, 2, false, false, {3, 2}), LightWorld::kPickup);
+  const FullState onKey =
+      after(lightWorldState(0, 3, 2, false, false, {3, 2}), LightWorld::kPickup);
   EXPECT_TRUE(onKey.haveKey);
   EXPECT_EQ(onKey.key, Cell{});
   const State s = LightWorld::observe(onKey);
   EXPECT_EQ(s[LightWorld::kHaveKey], 1.0f);
   EXPECT_EQ((State{s[5], s[6], s[7], s[8]}), (State{0, 0, 0, 0}));  // key lights off
 
-  const FullState offKey = after(at(0, 3, 3, false, false, {3, 2}), LightWorld::kPickup);
+  const FullState offKey =
+      after(lightWorldState(0, 3, 3, false, false, {3, 2}), LightWorld::kPickup);
   EXPECT_FALSE(offKey.haveKey);
   EXPECT_EQ(offKey.key, (Cell{3, 2}));
 }
 
 TEST(LightWorld, PressOpensTheDoorOnlyWithTheKeyOnTheLock) {
   float r = -1.0f;
-  const FullState pressed = after(at(0, 2, 6, true, false), LightWorld::kPress, &r);
+  const FullState pressed = after(lightWorldState(0, 2, 6, true, false), LightWorld::kPress, &r);
   EXPECT_TRUE(pressed.doorOpen);
   EXPECT_EQ(r, 0.0f);
   // Door lights on: door (5,6) seen from the lock (2,6): N = 10 - 3, E = W = 10, S = 0.
   const State s = LightWorld::observe(pressed);
   EXPECT_EQ((State{s[13], s[14], s[15], s[16]}), (State{7, 10, 10, 0}));
 
-  EXPECT_FALSE(after(at(0, 2, 6, false, false, {3, 3}), LightWorld::kPress).doorOpen);  // no key
-  EXPECT_FALSE(after(at(0, 2, 5, true, false), LightWorld::kPress).doorOpen);  // not on lock
-  EXPECT_FALSE(after(at(0, 5, 6, true, false), LightWorld::kPress).doorOpen);  // on the door
+  EXPECT_FALSE(after(lightWorldState(0, 2, 6, false, false, {3, 3}), LightWorld::kPress)
+                   .doorOpen);  // no key
+  EXPECT_FALSE(
+      after(lightWorldState(0, 2, 5, true, false), LightWorld::kPress).doorOpen);  // not on lock
+  EXPECT_FALSE(
+      after(lightWorldState(0, 5, 6, true, false), LightWorld::kPress).doorOpen);  // on the door
 }
 
 struct ExitCase {
@@ -189,12 +186,12 @@ TEST(LightWorld, LeavingEachRoomEntersTheNextAtTheRightCell) {
   for (const ExitCase& c : cases) {
     SCOPED_TRACE("room " + std::to_string(c.room));
     LightWorld env(7, false);
-    env.setFullState(at(c.room, c.door.ns, c.door.ew, true, true));
+    env.setFullState(lightWorldState(c.room, c.door.ns, c.door.ew, true, true));
     // Any other move on the open door keeps the agent in the room.
     for (int a = 0; a < 4; ++a) {
       if (a == c.exitAction) continue;
       LightWorld other(7, false);
-      other.setFullState(at(c.room, c.door.ns, c.door.ew, true, true));
+      other.setFullState(lightWorldState(c.room, c.door.ns, c.door.ew, true, true));
       EXPECT_EQ(other.apply(a), 0.0f);
       EXPECT_EQ(other.fullState().room, c.room);
     }
@@ -224,20 +221,20 @@ TEST(LightWorld, LeavingEachRoomEntersTheNextAtTheRightCell) {
 
 TEST(LightWorld, ClosedDoorWithKeyGivesNoExit) {
   float r = -1.0f;
-  const FullState s = after(at(1, 0, 1, true, false), LightWorld::kSouth, &r);
+  const FullState s = after(lightWorldState(1, 0, 1, true, false), LightWorld::kSouth, &r);
   expectAt(s, 1, 0, 1);
   EXPECT_EQ(r, 0.0f);
 }
 
 TEST(LightWorld, ObjectsOfTheCurrentRoom) {
   LightWorld env(3, true);
-  env.setFullState(at(3, 2, 3, false, false, {2, 3}));
+  env.setFullState(lightWorldState(3, 2, 3, false, false, {2, 3}));
   LightWorld::Objects o = env.objects();
   EXPECT_TRUE(o.keyPresent);
   EXPECT_EQ(o.key, (Cell{2, 3}));
   EXPECT_EQ(o.lock, (Cell{0, 4}));
   EXPECT_EQ(o.door, (Cell{5, 2}));
-  env.setFullState(at(3, 2, 3, true, false));
+  env.setFullState(lightWorldState(3, 2, 3, true, false));
   o = env.objects();
   EXPECT_FALSE(o.keyPresent);
   EXPECT_EQ(o.key, Cell{});
@@ -270,7 +267,7 @@ TEST(LightWorld, ResetGivesTheStartStatesOfSection46) {
 
 TEST(LightWorld, SetStateValidatesAndRecomputesSensors) {
   LightWorld env(5, true);
-  const State good = LightWorld::observe(at(0, 3, 2, false, false, {5, 4}));
+  const State good = LightWorld::observe(lightWorldState(0, 3, 2, false, false, {5, 4}));
   env.setState(good);
   EXPECT_EQ(env.sensation(), good);
   EXPECT_EQ(env.fullState().key, (Cell{5, 4}));  // decoded from the key sensors
@@ -282,7 +279,7 @@ TEST(LightWorld, SetStateValidatesAndRecomputesSensors) {
   State s = good;
   s[LightWorld::kRoomId] = 4;
   rejects(s, "room 4");
-  rejects(LightWorld::observe(at(0, 0, 3, false, false, {5, 4})), "a plain wall cell");
+  rejects(LightWorld::observe(lightWorldState(0, 0, 3, false, false, {5, 4})), "a plain wall cell");
   s = good;
   s[LightWorld::kDoorOpen] = 1;
   rejects(s, "door open without the key (and door lights off)");
@@ -295,9 +292,11 @@ TEST(LightWorld, SetStateValidatesAndRecomputesSensors) {
   s = good;
   s[LightWorld::kNs] = 2.5f;
   rejects(s, "fractional row");
-  rejects(LightWorld::observe(at(2, 3, 2, false, false, {3, 2})), "room 2 without the key");
-  rejects(LightWorld::observe(at(1, 3, 0, true, true)), "door open on the entry cell");
-  EXPECT_THROW(env.setFullState(at(0, 3, 2, false, false, {0, 0})), std::invalid_argument);
+  rejects(LightWorld::observe(lightWorldState(2, 3, 2, false, false, {3, 2})),
+          "room 2 without the key");
+  rejects(LightWorld::observe(lightWorldState(1, 3, 0, true, true)), "door open on the entry cell");
+  EXPECT_THROW(env.setFullState(lightWorldState(0, 3, 2, false, false, {0, 0})),
+               std::invalid_argument);
   EXPECT_EQ(env.sensation(), good);  // failed calls leave the state alone
 }
 
@@ -326,13 +325,14 @@ const Outcome* find(const std::vector<Outcome>& outcomes, const State& next) {
 TEST(LightWorldTrueModel, StochasticMoveHasThreeOutcomesByHand) {
   const LightWorld env(1, true);
   const Cell key{5, 4};
-  const std::vector<Outcome> out =
-      env.transitions(LightWorld::observe(at(0, 3, 3, false, false, key)), LightWorld::kNorth);
+  const std::vector<Outcome> out = env.transitions(
+      LightWorld::observe(lightWorldState(0, 3, 3, false, false, key)), LightWorld::kNorth);
   ASSERT_EQ(out.size(), 3u);
   rl_env_test::expectDistribution(out, "north");
-  const Outcome* north = find(out, LightWorld::observe(at(0, 4, 3, false, false, key)));
-  const Outcome* east = find(out, LightWorld::observe(at(0, 3, 4, false, false, key)));
-  const Outcome* west = find(out, LightWorld::observe(at(0, 3, 2, false, false, key)));
+  const Outcome* north =
+      find(out, LightWorld::observe(lightWorldState(0, 4, 3, false, false, key)));
+  const Outcome* east = find(out, LightWorld::observe(lightWorldState(0, 3, 4, false, false, key)));
+  const Outcome* west = find(out, LightWorld::observe(lightWorldState(0, 3, 2, false, false, key)));
   ASSERT_TRUE(north && east && west);
   EXPECT_DOUBLE_EQ(north->probability, 0.9);
   EXPECT_DOUBLE_EQ(east->probability, 0.05);
@@ -346,7 +346,7 @@ TEST(LightWorldTrueModel, StochasticMoveHasThreeOutcomesByHand) {
 TEST(LightWorldTrueModel, BlockedSlipsMergeWithTheStayOutcome) {
   // On the lock (2,6), EAST is blocked and its slips NORTH/SOUTH are blocked too: one outcome.
   const LightWorld env(1, true);
-  const State lock = LightWorld::observe(at(0, 2, 6, true, false));
+  const State lock = LightWorld::observe(lightWorldState(0, 2, 6, true, false));
   const std::vector<Outcome> out = env.transitions(lock, LightWorld::kEast);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].next, lock);
@@ -355,14 +355,14 @@ TEST(LightWorldTrueModel, BlockedSlipsMergeWithTheStayOutcome) {
   const std::vector<Outcome> press = env.transitions(lock, LightWorld::kPress);
   ASSERT_EQ(press.size(), 2u);
   rl_env_test::expectDistribution(press, "press");
-  const Outcome* opened = find(press, LightWorld::observe(at(0, 2, 6, true, true)));
+  const Outcome* opened = find(press, LightWorld::observe(lightWorldState(0, 2, 6, true, true)));
   ASSERT_NE(opened, nullptr);
   EXPECT_DOUBLE_EQ(opened->probability, 0.9);
 }
 
 TEST(LightWorldTrueModel, RoomExitSpreadsOverEveryKeyCell) {
   const LightWorld env(1, true);
-  const State door = LightWorld::observe(at(0, 5, 6, true, true));
+  const State door = LightWorld::observe(lightWorldState(0, 5, 6, true, true));
   const std::vector<Outcome> out = env.transitions(door, LightWorld::kEast);
   // 12 key cells of room 1 (4 x 3 interior) for the exit, plus staying (both slips blocked).
   ASSERT_EQ(out.size(), 13u);
@@ -379,10 +379,11 @@ TEST(LightWorldTrueModel, RoomExitSpreadsOverEveryKeyCell) {
     }
   }
   // Into room 2 (no key): a single exit outcome.
-  const std::vector<Outcome> toRoom2 =
-      env.transitions(LightWorld::observe(at(1, 0, 1, true, true)), LightWorld::kSouth);
+  const std::vector<Outcome> toRoom2 = env.transitions(
+      LightWorld::observe(lightWorldState(1, 0, 1, true, true)), LightWorld::kSouth);
   ASSERT_EQ(toRoom2.size(), 2u);
-  const Outcome* entered = find(toRoom2, LightWorld::observe(at(2, 7, 1, true, false)));
+  const Outcome* entered =
+      find(toRoom2, LightWorld::observe(lightWorldState(2, 7, 1, true, false)));
   ASSERT_NE(entered, nullptr);
   EXPECT_DOUBLE_EQ(entered->probability, 0.9);
 }
@@ -422,20 +423,22 @@ TEST(LightWorldTrueModel, SamplingAgreesWithTheDistribution) {
   LightWorld env(2024, true);
   const int n = 20000;
   // A move, a PICKUP on the key, a PRESS on the lock, and a room exit (13 outcomes).
-  rl_env_test::expectSamplingAgrees(env, LightWorld::observe(at(0, 3, 3, false, false, {5, 4})),
-                                    LightWorld::kWest, n);
-  rl_env_test::expectSamplingAgrees(env, LightWorld::observe(at(0, 3, 2, false, false, {3, 2})),
-                                    LightWorld::kPickup, n);
-  rl_env_test::expectSamplingAgrees(env, LightWorld::observe(at(2, 3, 4, true, false)),
+  rl_env_test::expectSamplingAgrees(
+      env, LightWorld::observe(lightWorldState(0, 3, 3, false, false, {5, 4})), LightWorld::kWest,
+      n);
+  rl_env_test::expectSamplingAgrees(
+      env, LightWorld::observe(lightWorldState(0, 3, 2, false, false, {3, 2})), LightWorld::kPickup,
+      n);
+  rl_env_test::expectSamplingAgrees(env, LightWorld::observe(lightWorldState(2, 3, 4, true, false)),
                                     LightWorld::kPress, n);
-  rl_env_test::expectSamplingAgrees(env, LightWorld::observe(at(0, 5, 6, true, true)),
+  rl_env_test::expectSamplingAgrees(env, LightWorld::observe(lightWorldState(0, 5, 6, true, true)),
                                     LightWorld::kEast, n);
-  rl_env_test::expectSamplingAgrees(env, LightWorld::observe(at(2, 3, 0, true, true)),
+  rl_env_test::expectSamplingAgrees(env, LightWorld::observe(lightWorldState(2, 3, 0, true, true)),
                                     LightWorld::kWest, n);
 
   // Binomial check of the success probability of PICKUP: 0.9 within 4 standard deviations.
   int picked = 0;
-  const State onKey = LightWorld::observe(at(1, 2, 2, false, false, {2, 2}));
+  const State onKey = LightWorld::observe(lightWorldState(1, 2, 2, false, false, {2, 2}));
   for (int i = 0; i < n; ++i) {
     env.setState(onKey);
     env.apply(LightWorld::kPickup);

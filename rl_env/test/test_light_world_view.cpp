@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "light_world_states.h"
 #include "rl_env/render/renderable.h"
 
 namespace {
@@ -17,17 +18,7 @@ using rl_env::LightWorldView;
 using rl_env::Rgb;
 using rl_env::RgbImage;
 
-LightWorld::FullState state(int room, int ns, int ew, bool haveKey, bool doorOpen,
-                            LightWorld::Cell key = {}) {
-  LightWorld::FullState s;
-  s.room = room;
-  s.ns = ns;
-  s.ew = ew;
-  s.haveKey = haveKey;
-  s.doorOpen = doorOpen;
-  s.key = key;
-  return s;
-}
+using rl_env::testing::lightWorldState;
 
 // The pixel at the centre of cell (ns, ew); a quarter cell in from its top-left corner.
 Rgb centre(const RgbImage& image, int room, int ns, int ew) {
@@ -46,7 +37,8 @@ TEST(LightWorldView, EveryRoomOnTheSameCanvas) {
     const LightWorld::Room& r = LightWorld::room(room);
     const bool key = r.hasKey;
     const RgbImage image = LightWorldView::render(
-        state(room, 1, 1, !key, false, key ? LightWorld::Cell{2, 2} : LightWorld::Cell{}), -1);
+        lightWorldState(room, 1, 1, !key, false, key ? LightWorld::Cell{2, 2} : LightWorld::Cell{}),
+        -1);
     EXPECT_EQ(image.width(), LightWorldView::kWidth) << room;
     EXPECT_EQ(image.height(), LightWorldView::kHeight) << room;
     // The whole room lies on the canvas: its corner cells are walls.
@@ -57,7 +49,7 @@ TEST(LightWorldView, EveryRoomOnTheSameCanvas) {
 
 TEST(LightWorldView, ObjectsWhereTheStatePutsThem) {
   // Room 0 (8 x 7): lock (2, 6) and door (5, 6) in the east wall; the key at (4, 3).
-  const RgbImage image = LightWorldView::render(state(0, 1, 1, false, false, {4, 3}), -1);
+  const RgbImage image = LightWorldView::render(lightWorldState(0, 1, 1, false, false, {4, 3}), -1);
   EXPECT_EQ(centre(image, 0, 1, 1), LightWorldView::kAgent);
   EXPECT_EQ(centre(image, 0, 4, 3), LightWorldView::kKey);
   EXPECT_EQ(centre(image, 0, 2, 6), LightWorldView::kLock);
@@ -75,7 +67,8 @@ TEST(LightWorldView, ObjectsWhereTheStatePutsThem) {
 }
 
 TEST(LightWorldView, KeyHeldAndDoorOpen) {
-  const RgbImage image = LightWorldView::render(state(0, 3, 3, true, true), LightWorld::kPress);
+  const RgbImage image =
+      LightWorldView::render(lightWorldState(0, 3, 3, true, true), LightWorld::kPress);
   EXPECT_EQ(centre(image, 0, 5, 6), LightWorldView::kDoorOpen);
   // The held key is a dot on the agent, and no key lies anywhere on the floor.
   EXPECT_EQ(centre(image, 0, 3, 3), LightWorldView::kKey);
@@ -90,7 +83,7 @@ TEST(LightWorldView, KeyHeldAndDoorOpen) {
 }
 
 TEST(LightWorldView, HeaderNamesTheLastAction) {
-  const auto s = state(1, 2, 2, false, false, {3, 3});
+  const auto s = lightWorldState(1, 2, 2, false, false, {3, 3});
   const RgbImage north = LightWorldView::render(s, LightWorld::kNorth);
   const RgbImage press = LightWorldView::render(s, LightWorld::kPress);
   EXPECT_NE(north.bytes(), press.bytes());
@@ -100,7 +93,8 @@ TEST(LightWorldView, HeaderNamesTheLastAction) {
       std::equal(north.bytes().begin() + from, north.bytes().end(), press.bytes().begin() + from));
   EXPECT_STREQ(LightWorldView::actionName(LightWorld::kPickup), "PICKUP");
   EXPECT_THROW(LightWorldView::render(s, 6), std::invalid_argument);
-  EXPECT_THROW(LightWorldView::render(state(4, 1, 1, false, false), -1), std::out_of_range);
+  EXPECT_THROW(LightWorldView::render(lightWorldState(4, 1, 1, false, false), -1),
+               std::out_of_range);
 }
 
 TEST(LightWorldView, TheEnvironmentRendersItsCurrentState) {
