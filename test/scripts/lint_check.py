@@ -82,6 +82,7 @@ SUITE_DEPENDENCIES = {
     "rl_agent": {"rl_common", "rl_msgs"},
     "nao_interface": {"rl_common", "rl_env", "rl_msgs", "naoqi_bridge_msgs"},
     "rl_experiment": {"rl_common", "rl_env", "rl_agent", "nao_interface", "rl_msgs"},
+    "rl_python": {"rl_common", "rl_env", "rl_agent"},
 }
 DEPEND_TAG = re.compile(r"<(?:\w+_)?depend>\s*([\w-]+)\s*</")
 INCLUDE = re.compile(r'^\s*#\s*include\s*[<"](\w+)/')
