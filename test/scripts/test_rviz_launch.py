@@ -3,7 +3,8 @@
 loader reads nao_arm_exploration.launch and nao_arm_sim.launch with rviz:=false and rviz:=true;
 only with true do robot_state_publisher (on the suite's URDF, as robot_description) and rviz (with
 the committed config) appear, and the config parses as YAML and names the displays and topics
-the view needs.
+the view needs. lightworld_experiment.launch likewise: rviz:=true adds rviz on the LightWorld
+config and turns the env node's rendering (~render) on; off by default.
 
 Run with the workspace sourced: /usr/bin/python3 test/scripts/test_rviz_launch.py [--xunit FILE]
 (`./rl test` registers it with catkin_run_tests_target).
@@ -22,6 +23,8 @@ NAO = rospkg.RosPack().get_path("nao_interface")
 SIM = os.path.join(NAO, "launch", "nao_arm_sim.launch")
 CONFIG = os.path.join(NAO, "rviz", "nao_arm.rviz")
 URDF = os.path.join(NAO, "urdf", "nao_upper_body.urdf")
+LIGHTWORLD = os.path.join(SUITE, "launch", "launch", "lightworld_experiment.launch")
+LIGHTWORLD_CONFIG = os.path.join(rospkg.RosPack().get_path("rl_env"), "rviz", "lightworld.rviz")
 
 
 def load(launch_file, *args):
@@ -70,6 +73,25 @@ class RvizArg(unittest.TestCase):
     def test_sim_launch(self):
         self.check_launch(SIM)
 
+    def test_lightworld_launch(self):
+        def render(config):
+            return config.params["/env/render"].value
+
+        default = load(LIGHTWORLD)
+        off = load(LIGHTWORLD, "rviz:=false")
+        self.assertEqual(set(nodes_by_package(default)), set(nodes_by_package(off)),
+                         "rviz must default to false")
+        self.assertNotIn("rviz", nodes_by_package(off))
+        self.assertIs(render(default), False)
+        on_config = load(LIGHTWORLD, "rviz:=true")
+        on = nodes_by_package(on_config)
+        self.assertEqual(set(on) - set(nodes_by_package(off)), {"rviz"})
+        self.assertIs(render(on_config), True)
+        self.assertEqual(on["rl_env"].type, "env")
+        args = on["rviz"].args.split()
+        self.assertEqual(os.path.realpath(args[args.index("-d") + 1]),
+                         os.path.realpath(LIGHTWORLD_CONFIG))
+
 
 class RvizConfig(unittest.TestCase):
     def test_config_names_the_displays_and_topics(self):
@@ -88,6 +110,13 @@ class RvizConfig(unittest.TestCase):
         self.assertEqual(manager["Global Options"]["Fixed Frame"], "torso")
         with open(URDF) as f:
             self.assertIn('<link name="torso">', f.read())
+
+    def test_lightworld_config_shows_the_rendered_grid(self):
+        shown, manager = displays(LIGHTWORLD_CONFIG)
+        self.assertEqual([(d["Class"], d["Image Topic"], d["Enabled"]) for d in shown],
+                         [("rviz/Image", "/rl_env/image", True)])
+        # The env node's image frame (rl_env/render), so rviz reports no missing frame.
+        self.assertEqual(manager["Global Options"]["Fixed Frame"], "rl_env")
 
 
 if __name__ == "__main__":
