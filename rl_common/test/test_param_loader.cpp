@@ -121,6 +121,19 @@ TEST(StartNode, BadOptionsAndFailedChecksExitTwoWithTheMessage) {
   }
 }
 
+TEST(StartNode, AnUnknownOptionIsNamedOnceByItsProgram) {
+  Config c;
+  auto p = makeParser(&c);  // its program is "test", as the node's
+  const char* bad[] = {"test", "--nosuch", "1"};
+  testing::internal::CaptureStderr();
+  const rl_common::NodeStart start = rl_common::startNode(p, 3, bad, "test");
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(start.exitCode, 2);
+  EXPECT_EQ(err.rfind("test: unknown option '--nosuch'", 0), 0u) << err;
+  EXPECT_EQ(rl_common::prefixedError("node", "node: x"), "node: x");
+  EXPECT_EQ(rl_common::prefixedError("node", "nodes: x"), "node: nodes: x");
+}
+
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   ros::init(argc, argv, "param_loader");

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <ros/console.h>
+#include <ros/master.h>
 #include <ros/node_handle.h>
 
 #include <functional>
@@ -89,11 +90,21 @@ struct NodeStart {
   explicit operator bool() const { return privateHandle != nullptr; }
 };
 
+/// "program: message", without a second prefix when the message has it already (the
+/// OptionParser names its program in its own errors).
+inline std::string prefixedError(const std::string& program, const std::string& message) {
+  const std::string prefix = program + ": ";
+  return message.rfind(prefix, 0) == 0 ? message : prefix + message;
+}
+
 /// Every node's start: the command line first (--help and a mistyped option need no master),
 /// then the `~private` parameters and the command line again (it wins), then `check` (the
-/// node's own option rules; throws). --help prints the help and `helpExtra`; an error prints
-/// "program: message" to stderr and gives exit code 2. On success logs the configuration
-/// ("configuration: name=value ...", rosconsole logger `program`).
+/// node's own option rules; throws). With no master to reach, `check` also runs on the command
+/// line alone before the node waits for one, so a bad value (`--env nosuch`) is reported at
+/// once instead of after a master appears: no parameter could have been read to change it.
+/// --help prints the help and `helpExtra`; an error prints "program: message" to stderr and
+/// gives exit code 2. On success logs the configuration ("configuration: name=value ...",
+/// rosconsole logger `program`). `check` must be safe to run twice (it validates and derives).
 inline NodeStart startNode(OptionParser& parser, int argc, const char* const* argv,
                            const std::string& program, const std::function<void()>& check = {},
                            const std::string& helpExtra = "") {
@@ -103,11 +114,12 @@ inline NodeStart startNode(OptionParser& parser, int argc, const char* const* ar
       std::cout << parser.help() << helpExtra;
       return start;
     }
-    start.privateHandle = std::make_unique<ros::NodeHandle>("~");
-    parseNodeOptions(parser, argc, argv, *start.privateHandle);  // no --help: seen above
+    if (check && !ros::master::check()) check();
+    start.privateHandle = std::make_unique<ros::NodeHandle>("~");  // waits for a master
+    parseNodeOptions(parser, argc, argv, *start.privateHandle);    // no --help: seen above
     if (check) check();
   } catch (const std::exception& e) {
-    std::cerr << program << ": " << e.what() << "\n";
+    std::cerr << prefixedError(program, e.what()) << "\n";
     start.privateHandle.reset();
     start.exitCode = 2;
     return start;
