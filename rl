@@ -30,6 +30,7 @@ APT_PACKAGES=(
   ros-visualization-msgs libvisualization-msgs-dev python3-visualization-msgs
   python3-matplotlib python3-numpy python3-rosbag pybind11-dev python3-dev
   slurmctld slurmd slurm-client munge
+  rviz ros-robot-state-publisher  # rviz:=true of the launch files works after the set-up commands
 )
 
 log() { printf '\033[1m[rl]\033[0m %s\n' "$*" >&2; }

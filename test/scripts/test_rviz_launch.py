@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
-"""The rviz:=true launch args (issue 17), checked without rviz installed: roslaunch's own config
+"""The rviz:=true launch args (issue 17), checked without a display: roslaunch's own config
 loader reads nao_arm_exploration.launch and nao_arm_sim.launch with rviz:=false and rviz:=true;
 only with true do robot_state_publisher (on the suite's URDF, as robot_description) and rviz (with
 the committed config) appear, and the config parses as YAML and names the displays and topics
 the view needs. lightworld_experiment.launch likewise: rviz:=true adds rviz on the LightWorld
-config and turns the env node's rendering (~render) on; off by default.
+config and turns the env node's rendering (~render) on; off by default. And every node those
+launches start with rviz:=true resolves to an executable, as roslaunch resolves it: rviz and
+robot_state_publisher come from ./rl's apt packages, so the set-up commands are enough.
 
 Run with the workspace sourced: /usr/bin/python3 test/scripts/test_rviz_launch.py [--xunit FILE]
 (`./rl test` registers it with catkin_run_tests_target).
@@ -14,6 +16,7 @@ import sys
 import unittest
 
 import roslaunch.config
+import roslib.packages
 import rospkg
 import yaml
 
@@ -119,6 +122,16 @@ class RvizConfig(unittest.TestCase):
         self.assertEqual(manager["Global Options"]["Fixed Frame"], "rl_env")
 
 
+class RvizInstalled(unittest.TestCase):
+    def test_every_rviz_node_resolves_to_an_executable(self):
+        for launch_file in (EXPLORATION, SIM, LIGHTWORLD):
+            for node in load(launch_file, "rviz:=true").nodes:
+                with self.subTest(launch=os.path.basename(launch_file), node=node.type):
+                    found = roslib.packages.find_node(node.package, node.type)
+                    self.assertTrue(found, "%s/%s is not installed" % (node.package, node.type))
+                    self.assertTrue(os.access(found[0], os.X_OK), found[0])
+
+
 if __name__ == "__main__":
     argv = sys.argv[1:]
     if "--xunit" in argv:
@@ -126,7 +139,7 @@ if __name__ == "__main__":
         path = argv[i + 1]
         import rosunit
         suite = unittest.TestSuite(unittest.defaultTestLoader.loadTestsFromTestCase(c)
-                                   for c in (RvizArg, RvizConfig))
+                                   for c in (RvizArg, RvizConfig, RvizInstalled))
         result = rosunit.create_xml_runner("rl_texplore_tests", "test_rviz_launch",
                                            results_file=path).run(suite)
         sys.exit(0 if result.wasSuccessful() else 1)
