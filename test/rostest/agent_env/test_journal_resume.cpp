@@ -1,6 +1,7 @@
 // A SIGKILLed agent node resumes from its experience journal (agent_journal_resume.test).
 #include <gtest/gtest.h>
 #include <rl_msgs/RLEnvDescription.h>
+#include <rl_msgs/RLStateReward.h>
 #include <ros/ros.h>
 #include <ros/topic.h>
 #include <signal.h>
@@ -100,6 +101,17 @@ TEST(AgentNode, ResumesFromItsJournalAfterAKill) {
   int status = 0;
   ASSERT_EQ(::waitpid(first, &status, 0), first);
   ASSERT_TRUE(WIFSIGNALED(status));
+  // The env may be one step past the journal: the agent journals an experience when the next
+  // state arrives, so a kill after it sent an action but before it heard the answer leaves
+  // that last step unjournaled (lost, as it should be). The state the restarted agent must go
+  // on from is the env's latched one once any action still in flight has landed.
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  const rl_msgs::RLStateReward::ConstPtr heldByEnv = [] {
+    ros::NodeHandle nh;
+    return ros::topic::waitForMessage<rl_msgs::RLStateReward>("rl_env/rl_state_reward", nh,
+                                                              ros::Duration(30.0));
+  }();
+  ASSERT_NE(heldByEnv, nullptr) << "no latched state from the env node in 30 s";
 
   const rl_agent::JournalContents killed = rl_agent::readExperienceJournal(journal);
   const std::size_t k = killed.records.size();
@@ -182,8 +194,10 @@ TEST(AgentNode, ResumesFromItsJournalAfterAKill) {
       << log;
   const rl_agent::JournalContents resumed = rl_agent::readExperienceJournal(journal);
   ASSERT_GE(resumed.records.size(), k + 100);
-  // The restarted pair goes on from the state the env held when the agent died.
-  EXPECT_EQ(resumed.records[k].s, killed.records[k - 1].next);
+  // The restarted pair goes on from the state the env held when the agent died: the journal's
+  // last state, or the one after it when the last action was sent but its answer not heard.
+  EXPECT_EQ(resumed.records[k].s,
+            rl_common::State(heldByEnv->state.begin(), heldByEnv->state.end()));
   for (std::size_t i = 0; i < k; ++i) {
     ASSERT_EQ(resumed.records[i].s, killed.records[i].s) << "the kept records were rewritten";
   }
