@@ -12,21 +12,23 @@
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "experiment");
-  rl_experiment::NodeConfig config;
+  rl_experiment::ExperimentConfig config;  // the runner's config: one default per option
   rl_common::OptionParser parser("experiment_node", "[--steps N] [--trials N] [--out DIR] ...");
-  parser.value("steps", &config.steps, "steps per trial", rl_common::greaterThan(0));
+  // The node counts steps, as the runner does on a non-episodic task: --steps is that count
+  // (the runner's --nepisodes, which its --steps overrides).
+  parser.value("steps", &config.nepisodes, "steps per trial", rl_common::greaterThan(0));
   parser.value("trials", &config.trials, "number of trials", rl_common::greaterThan(0));
-  parser.value("seed", &config.seed, "run seed: trial seeds are derived from it");
+  parser.value("seed", &config.env.seed, "run seed: trial seeds are derived from it");
   parser.value("out", &config.out,
                "folder for the logs (auto: a new folder under ROS_HOME/rl_experiment; none: no "
                "files)");
   parser.flag("force", &config.force, true, "overwrite the results in --out");
   parser.flag("resume", &config.resume, true,
               "finish the unfinished trials in --out (the same options as the run it resumes)");
-  parser.value("label", &config.label, "name of this run in figures");
-  parser.value("agent", &config.agent, "the agent node's type (recorded in the logs)");
-  parser.value("env", &config.env, "the env node's environment (recorded in the logs)");
-  parser.value("timeout", &config.timeout, "seconds without a step before a trial fails",
+  parser.value("label", &config.label, "name of this run in figures (default: the agent)");
+  parser.value("agent", &config.agent.agent, "the agent node's type (recorded in the logs)");
+  parser.value("env", &config.env.env, "the env node's environment (recorded in the logs)");
+  parser.value("timeout", &config.stepTimeout, "seconds without a step before a trial fails",
                rl_common::greaterThan(0.0));
   const rl_common::NodeStart start =
       rl_common::startNode(parser, argc, argv, "experiment_node", [&] {
@@ -44,14 +46,8 @@ int main(int argc, char** argv) {
   }
   std::string commandLine;
   for (int i = 0; i < argc; ++i) commandLine += (i > 0 ? " " : "") + std::string(argv[i]);
-  rl_experiment::ExperimentConfig ec;
-  ec.out = config.out;
-  ec.force = config.force;
-  ec.resume = config.resume;
-  ec.trials = config.trials;
-  ec.label = config.label;
-  ec.env.seed = config.seed;
-  rl_experiment::Experiment experiment(ec, parser.currentValues(), commandLine);
+  if (config.label.empty()) config.label = config.agent.agent;
+  rl_experiment::Experiment experiment(config, parser.currentValues(), commandLine);
   try {
     experiment.prepare();
   } catch (const std::exception& e) {

@@ -9,7 +9,7 @@
 
 namespace rl_experiment {
 
-ExperimentNode::ExperimentNode(ros::NodeHandle nh, NodeConfig config, Experiment* experiment)
+ExperimentNode::ExperimentNode(ros::NodeHandle nh, ExperimentConfig config, Experiment* experiment)
     : nh_(nh), config_(std::move(config)), experiment_(experiment) {
   actionSub_ = nh_.subscribe("rl_agent/rl_action", 100, &ExperimentNode::onAction, this);
   breakdownSub_ =
@@ -65,9 +65,10 @@ void ExperimentNode::onState(const rl_msgs::RLStateReward::ConstPtr& msg) {
     episodeRecord_ = EpisodeRecord();
     episodeRecord_.episode = episode_;
   }
-  if (steps_ >= config_.steps) counting_ = false;
+  if (steps_ >= config_.nonEpisodicSteps()) counting_ = false;
   if (steps_ % 100 == 0 || !counting_) {
-    publishProgress("step " + std::to_string(steps_) + "/" + std::to_string(config_.steps));
+    publishProgress("step " + std::to_string(steps_) + "/" +
+                    std::to_string(config_.nonEpisodicSteps()));
   }
 }
 
@@ -75,7 +76,7 @@ bool ExperimentNode::callReset(ros::ServiceClient& client, const std::string& wh
                                std::uint64_t seed) {
   // The node may still be starting (e.g. the agent waits for the environment's description):
   // retry until it accepts the reset or the timeout passes.
-  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(config_.timeout);
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(config_.stepTimeout);
   std::string problem = "no service " + client.getService();
   while (ros::ok() && ros::WallTime::now() < deadline) {
     if (client.waitForExistence(ros::Duration(0.2))) {
@@ -94,8 +95,8 @@ bool ExperimentNode::callReset(ros::ServiceClient& client, const std::string& wh
 }
 
 bool ExperimentNode::runTrial(int trial) {
-  const TrialSeeds seeds = trialSeeds(config_.seed, trial);
-  TrialInfo info{trial,       config_.label, config_.agent, config_.env,
+  const TrialSeeds seeds = trialSeeds(config_.env.seed, trial);
+  TrialInfo info{trial,       config_.label, config_.agent.agent, config_.env.env,
                  seeds.agent, seeds.env,     seeds.eval};
   counting_ = false;
   // Environment first, then the agent: the rebuilt agent starts (first action) on the next state
@@ -117,15 +118,16 @@ bool ExperimentNode::runTrial(int trial) {
                   " started");
   while (ros::ok() && counting_) {
     ros::spinOnce();
-    if ((ros::WallTime::now() - lastStepTime_).toSec() > config_.timeout) {
-      ROS_ERROR_STREAM_NAMED("experiment", "trial " << trial << ": no step for " << config_.timeout
+    if ((ros::WallTime::now() - lastStepTime_).toSec() > config_.stepTimeout) {
+      ROS_ERROR_STREAM_NAMED("experiment", "trial " << trial << ": no step for "
+                                                    << config_.stepTimeout
                                                     << " s; are the agent and env nodes up?");
       counting_ = false;
       return false;
     }
     ros::WallDuration(0.0005).sleep();
   }
-  if (steps_ < config_.steps) return false;
+  if (steps_ < config_.nonEpisodicSteps()) return false;
   if (episodeRecord_.steps > 0) {
     logger_->onEpisode(episodeRecord_);
     ++summary_.episodes;

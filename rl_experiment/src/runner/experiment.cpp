@@ -197,7 +197,7 @@ std::vector<std::pair<std::string, std::string>> Experiment::runTrial(
   }
 
   TrialLimits limits;
-  limits.steps = config_.steps > 0 ? config_.steps : config_.nepisodes;
+  limits.steps = config_.nonEpisodicSteps();
   limits.episodes = config_.nepisodes;
   limits.maxSteps = config_.maxsteps;
   limits.exploreSteps = config_.exploreSteps;

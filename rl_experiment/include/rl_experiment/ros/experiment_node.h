@@ -31,22 +31,11 @@
 
 namespace rl_experiment {
 
-struct NodeConfig {
-  int steps = 1000;                ///< --steps per trial
-  int trials = 1;                  ///< --trials
-  std::uint64_t seed = 1;          ///< --seed: the run seed
-  std::string out;                 ///< --out folder
-  bool force = false;              ///< --force
-  bool resume = false;             ///< --resume: run only the trials without a summary in --out
-  std::string label = "ros";       ///< --label
-  std::string agent = "texplore";  ///< --agent (recorded only)
-  std::string env = "lightworld";  ///< --env (recorded only)
-  double timeout = 60.0;           ///< --timeout: seconds without a step before a trial fails
-};
-
 class ExperimentNode {
  public:
-  ExperimentNode(ros::NodeHandle nh, NodeConfig config, Experiment* experiment);
+  /// Counts config.nonEpisodicSteps() steps per trial, config.trials trials seeded from
+  /// config.env.seed; the agent and env names are recorded only.
+  ExperimentNode(ros::NodeHandle nh, ExperimentConfig config, Experiment* experiment);
 
   /// Runs every trial; returns the number of failed ones. Spins the node's callbacks itself.
   int run();
@@ -61,7 +50,7 @@ class ExperimentNode {
   void publishProgress(const std::string& text);
 
   ros::NodeHandle nh_;
-  NodeConfig config_;
+  ExperimentConfig config_;
   Experiment* experiment_;
   ros::Subscriber actionSub_, breakdownSub_, stateSub_;
   ros::Publisher progressPub_;

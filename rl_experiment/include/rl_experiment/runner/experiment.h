@@ -58,6 +58,11 @@ struct ExperimentConfig {
   std::string format = "csv";         ///< --format csv|original
   std::string label;                  ///< --label (default: the agent's name)
   std::string progress = "auto";      ///< --progress auto|on|off
+  double stepTimeout = 60.0;  ///< experiment_node --timeout: seconds without a step before a
+                              ///< trial fails (the ROS mode only)
+
+  /// Steps per trial of a non-episodic task: --steps, or --nepisodes when it is 0 (the original).
+  int nonEpisodicSteps() const { return steps > 0 ? steps : nepisodes; }
 };
 
 /// Declares every runner option (agent, environment and the runner's own) on `parser`.
