@@ -120,7 +120,8 @@ TEST(AgentOptions, ComparisonExplorersAndTau) {
   AgentOptions o = parse({"--agent", "texplore", "--explore", "boltzmann", "--tau", "0.2"});
   EXPECT_EQ(o.explore, "boltzmann");
   EXPECT_FLOAT_EQ(o.tau, 0.2f);
-  EXPECT_NE(errorOf({"--agent", "texplore", "--tau", "0.5"}).find("--tau needs --explore"),
+  EXPECT_NE(errorOf({"--agent", "texplore", "--tau", "0.5"})
+                .find("--tau applies to --explore boltzmann, not to 'greedy'"),
             std::string::npos);
   EXPECT_NE(errorOf({"--agent", "texplore", "--explore", "boltzmann", "--tau", "0"}), "");
   EXPECT_NE(errorOf({"--agent", "qlearner", "--tau", "0.5"}), "");
@@ -130,6 +131,15 @@ TEST(AgentOptions, ComparisonExplorersAndTau) {
   o = parse({"--agent", "texplore", "--explore", "prederror", "--v", "3"});
   EXPECT_FLOAT_EQ(o.v, 3.0f);
   EXPECT_NE(errorOf({"--agent", "texplore", "--explore", "random", "--v", "1"}), "");
+  // Which explorer reads which option comes from the explorer registry's entries.
+  EXPECT_NE(errorOf({"--agent", "texplore", "--explore", "random", "--n", "3"})
+                .find("--n applies to --explore unvisitedactions, unvisitedstates, "
+                      "variancenovelty, not to 'random'"),
+            std::string::npos);
+  EXPECT_EQ(errorOf({"--agent", "texplore", "--explore", "unvisitedstates", "--n", "1"}), "");
+  EXPECT_NE(errorOf({"--agent", "texplore", "--explore", "competence", "--novelty", "state"})
+                .find("--novelty applies to --explore variancenovelty, not to 'competence'"),
+            std::string::npos);
   EXPECT_EQ(parse({"--agent", "modelbased", "--model", "tabular", "--explore", "random"}).model,
             "tabular");
 }

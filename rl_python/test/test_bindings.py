@@ -249,8 +249,8 @@ class OptionErrors(unittest.TestCase):
                               rl.make_agent, "qlearner", env, gamma=2)
         self.assertValueError("option --combo average needs --nmodels > 1 (one tree has nothing "
                               "to combine)", rl.make_agent, "texplore", env, nmodels=1)
-        self.assertValueError("option --tau needs --explore boltzmann", rl.make_agent,
-                              "texplore", env, tau=0.5)
+        self.assertValueError("option --tau applies to --explore boltzmann, not to 'greedy'",
+                              rl.make_agent, "texplore", env, tau=0.5)
         with self.assertRaisesRegex(ValueError, r"^make_agent: unknown option 'bogus'; valid "
                                     r"options: --help, --agent, --gamma, --discountfactor, "):
             rl.make_agent("texplore", env, bogus=1)

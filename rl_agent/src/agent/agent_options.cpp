@@ -241,17 +241,14 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
       throw rl_common::OptionError(
           "option --taskoutcomes needs --taskkey (over all features the two are the same)");
     }
-    if (p.given("epsilon") && o.explore != "epsilongreedy") {
-      throw rl_common::OptionError(
-          "option --epsilon applies to model-based agents only with --explore epsilongreedy");
-    }
-    if ((p.given("v") || p.given("b")) && o.explore != "variancenovelty" &&
-        o.explore != "competence" && o.explore != "prederror") {
-      throw rl_common::OptionError(
-          "option --v needs --explore variancenovelty, competence or prederror");
-    }
-    if (p.given("tau") && o.explore != "boltzmann") {
-      throw rl_common::OptionError("option --tau needs --explore boltzmann");
+    // Each explorer's entry names the options it reads (--v, --n, --tau, --epsilon, ...).
+    const ExplorerRegistry& explorers = explorerRegistry();
+    for (const std::string& option : explorers.specificOptions()) {
+      if (p.given(option) && !explorers.takesOption(o.explore, option)) {
+        throw rl_common::OptionError("option --" + option + " applies to --explore " +
+                                     rl_common::joinNames(explorers.namesTaking(option)) +
+                                     ", not to '" + o.explore + "'");
+      }
     }
     try {
       checkModelExplorer(o.model, o.explore);
@@ -261,14 +258,6 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
     }
     if (o.agent == "rmax" && o.explore != "unknown") {
       throw rl_common::OptionError("--agent rmax needs --explore unknown");
-    }
-    if (p.given("novelty") && o.explore != "variancenovelty") {
-      throw rl_common::OptionError("option --novelty needs --explore variancenovelty");
-    }
-    if (p.given("n") && o.explore != "variancenovelty" && o.explore != "unvisitedstates" &&
-        o.explore != "unvisitedactions") {
-      throw rl_common::OptionError(
-          "option --n needs --explore variancenovelty, unvisitedstates or unvisitedactions");
     }
     if (o.combo != "best" && o.nmodels == 1) {
       throw rl_common::OptionError("option --combo " + o.combo +

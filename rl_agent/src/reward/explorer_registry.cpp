@@ -24,17 +24,18 @@ ExplorerRegistry build() {
             e->epsilonGreedy = true;
             return e;
           },
-          "random action with probability epsilon", {kSelectionOnlyFact});
-  reg.add(
-      "variancenovelty",
-      [](const ExplorerSettings& s) {
-        auto e = std::make_unique<Explorer>();
-        if (s.v != 0.0f) e->rewards.push_back(std::make_shared<VarianceReward>(s.v));
-        if (s.n != 0.0f) e->rewards.push_back(std::make_shared<NoveltyReward>(s.n, s.stateNovelty));
-        if (!e->rewards.empty()) e->deferSteps = kVanirDeferSteps;
-        return e;
-      },
-      "TEXPLORE-VANIR: v * variance + n * novelty, one-way steps put off (--defer)");
+          "random action with probability epsilon", {kSelectionOnlyFact}, {"epsilon"});
+  reg.add("variancenovelty",
+          [](const ExplorerSettings& s) {
+            auto e = std::make_unique<Explorer>();
+            if (s.v != 0.0f) e->rewards.push_back(std::make_shared<VarianceReward>(s.v));
+            if (s.n != 0.0f)
+              e->rewards.push_back(std::make_shared<NoveltyReward>(s.n, s.stateNovelty));
+            if (!e->rewards.empty()) e->deferSteps = kVanirDeferSteps;
+            return e;
+          },
+          "TEXPLORE-VANIR: v * variance + n * novelty, one-way steps put off (--defer)", {},
+          {"v", "n", "novelty"});
   reg.add(
       "unknown",
       [](const ExplorerSettings& s) {
@@ -43,22 +44,20 @@ ExplorerRegistry build() {
         return e;
       },
       "R-MAX-style optimism for state-actions seen fewer than m times");
-  reg.add(
-      "unvisitedstates",
-      [](const ExplorerSettings& s) {
-        auto e = std::make_unique<Explorer>();
-        e->rewards.push_back(std::make_shared<UnvisitedStateReward>(s.n));
-        return e;
-      },
-      "bonus n for unvisited states");
-  reg.add(
-      "unvisitedactions",
-      [](const ExplorerSettings& s) {
-        auto e = std::make_unique<Explorer>();
-        e->rewards.push_back(std::make_shared<UnvisitedActionReward>(s.n));
-        return e;
-      },
-      "bonus n for untried state-actions");
+  reg.add("unvisitedstates",
+          [](const ExplorerSettings& s) {
+            auto e = std::make_unique<Explorer>();
+            e->rewards.push_back(std::make_shared<UnvisitedStateReward>(s.n));
+            return e;
+          },
+          "bonus n for unvisited states", {}, {"n"});
+  reg.add("unvisitedactions",
+          [](const ExplorerSettings& s) {
+            auto e = std::make_unique<Explorer>();
+            e->rewards.push_back(std::make_shared<UnvisitedActionReward>(s.n));
+            return e;
+          },
+          "bonus n for untried state-actions", {}, {"n"});
   reg.add("random",
           [](const ExplorerSettings&) {
             auto e = std::make_unique<Explorer>();
@@ -75,7 +74,7 @@ ExplorerRegistry build() {
             e->tau = s.tau;
             return e;
           },
-          "softmax action selection with temperature tau", {kSelectionOnlyFact});
+          "softmax action selection with temperature tau", {kSelectionOnlyFact}, {"tau"});
   const auto regionExplorer = [](RegionErrorReward::Kind kind) {
     return [kind](const ExplorerSettings& s) {
       auto regions = std::make_shared<const RandomRegions>(s.featMin, s.featMax, s.regions, s.seed);
@@ -89,9 +88,9 @@ ExplorerRegistry build() {
     };
   };
   reg.add("competence", regionExplorer(RegionErrorReward::Kind::CompetenceProgress),
-          "R-IAC-style competence progress in random regions (weight v)");
+          "R-IAC-style competence progress in random regions (weight v)", {}, {"v"});
   reg.add("prederror", regionExplorer(RegionErrorReward::Kind::PredictionError),
-          "prediction error in random regions (weight v)");
+          "prediction error in random regions (weight v)", {}, {"v"});
   return reg;
 }
 

@@ -113,8 +113,9 @@ void applyAgentDefaults(const rl_common::OptionParser& parser, AgentOptions* opt
 /// The original's option rules without its bugs: options apply only to the agents that use
 /// them (e.g. --alpha for qlearner, sarsa, dyna; --v for the model-based agents); --epsilon is
 /// accepted by every agent that acts epsilon-greedily; --combo other than best needs more than
-/// one tree; rmax needs a tabular model and --explore unknown; --tau needs --explore boltzmann;
-/// the tabular model takes the explorers greedy, epsilongreedy, random, boltzmann and unknown,
+/// one tree; rmax needs a tabular model and --explore unknown; an explorer's own options (--v,
+/// --n, --novelty, --tau, --epsilon for model-based agents) need an explorer whose registry
+/// entry reads them (e.g. --tau: boltzmann); the tabular model takes the explorers greedy, epsilongreedy, random, boltzmann and unknown,
 /// the m5tree model the first four. Throws rl_common::OptionError naming the option and
 /// where it applies.
 void checkAgentOptions(const rl_common::OptionParser& parser, const AgentOptions& options);
