@@ -14,6 +14,16 @@ namespace rl_agent {
 
 namespace {
 
+/// An explorer whose one intrinsic reward is a visit-count bonus of weight n.
+template <class Bonus>
+ExplorerRegistry::Factory countBonusExplorer() {
+  return [](const ExplorerSettings& s) {
+    auto e = std::make_unique<Explorer>();
+    e->rewards.push_back(std::make_shared<Bonus>(s.n));
+    return e;
+  };
+}
+
 ExplorerRegistry build() {
   ExplorerRegistry reg("explore type");
   reg.add("greedy", [](const ExplorerSettings&) { return std::make_unique<Explorer>(); },
@@ -44,19 +54,9 @@ ExplorerRegistry build() {
         return e;
       },
       "R-MAX-style optimism for state-actions seen fewer than m times");
-  reg.add("unvisitedstates",
-          [](const ExplorerSettings& s) {
-            auto e = std::make_unique<Explorer>();
-            e->rewards.push_back(std::make_shared<UnvisitedStateReward>(s.n));
-            return e;
-          },
+  reg.add("unvisitedstates", countBonusExplorer<UnvisitedStateReward>(),
           "bonus n for unvisited states", {}, {"n"});
-  reg.add("unvisitedactions",
-          [](const ExplorerSettings& s) {
-            auto e = std::make_unique<Explorer>();
-            e->rewards.push_back(std::make_shared<UnvisitedActionReward>(s.n));
-            return e;
-          },
+  reg.add("unvisitedactions", countBonusExplorer<UnvisitedActionReward>(),
           "bonus n for untried state-actions", {}, {"n"});
   reg.add("random",
           [](const ExplorerSettings&) {
