@@ -131,6 +131,17 @@ TEST(AgentOptions, ComparisonExplorersAndTau) {
   o = parse({"--agent", "texplore", "--explore", "prederror", "--v", "3"});
   EXPECT_FLOAT_EQ(o.v, 3.0f);
   EXPECT_NE(errorOf({"--agent", "texplore", "--explore", "random", "--v", "1"}), "");
+  // --taskcombo: the forests' combination for a value-iteration task phase.
+  EXPECT_EQ(parse({"--agent", "texplore", "--combo", "separate", "--taskplanner", "vi",
+                   "--taskcombo", "average"})
+                .taskcombo,
+            "average");
+  EXPECT_NE(errorOf({"--agent", "texplore", "--taskcombo", "average"}).find("--taskplanner vi"),
+            std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "modelbased", "--model", "tabular", "--taskplanner", "vi",
+                     "--taskcombo", "average"})
+                .find("--taskcombo applies to --model tree, not to 'tabular'"),
+            std::string::npos);
   // Which explorer reads which option comes from the explorer registry's entries.
   EXPECT_NE(errorOf({"--agent", "texplore", "--explore", "random", "--n", "3"})
                 .find("--n applies to --explore unvisitedactions, unvisitedstates, "

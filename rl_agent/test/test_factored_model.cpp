@@ -169,6 +169,31 @@ TEST(FactoredModel, OneQueryWithVarianceEqualsTheTwoCalls) {
   }
 }
 
+TEST(FactoredModel, RecombinedViewPlansOnTheWholeForest) {
+  // --combo separate predicts with tree 0; the view recombined as average (--taskcombo) mixes
+  // the same trees, and recombined as separate again predicts as the original view.
+  auto config = corridorConfig(5);
+  config.forest.combination = rl_agent::Combination::Separate;
+  FactoredModel model(config, 9);
+  std::vector<Experience> data = allCorridorExperiences();
+  for (int x = 0; x < 5; ++x) data.push_back({{float(x)}, 2, 0.5f, {float(x + 1)}, false});
+  model.update(data);
+  const auto view = model.factoredView();
+  const auto average = view->recombined(rl_agent::Combination::Average);
+  const auto same = average->recombined(rl_agent::Combination::Separate);
+  int differing = 0;
+  for (int x = 0; x <= 5; ++x) {
+    for (int a = 0; a < 3; ++a) {
+      const State s{float(x)};
+      EXPECT_EQ(same->featureDistribution(s, a, 0), view->featureDistribution(s, a, 0));
+      EXPECT_EQ(same->query(s, a).reward, view->query(s, a).reward);
+      EXPECT_EQ(average->variance(s, a), view->variance(s, a));  // the same trees
+      differing += average->featureDistribution(s, a, 0) != view->featureDistribution(s, a, 0);
+    }
+  }
+  EXPECT_GT(differing, 0) << "the trees disagree somewhere, so the average is not tree 0";
+}
+
 TEST(FactoredModel, RejectsMalformedExperiences) {
   FactoredModel model(corridorConfig(2), 1);
   EXPECT_THROW(model.update({{{1.0f, 2.0f}, 0, 0.0f, {1.0f}, false}}), std::invalid_argument);

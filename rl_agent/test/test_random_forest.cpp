@@ -161,6 +161,13 @@ TEST(RandomForest, CombinationsByHand) {
   expectDistribution(avg.predict({0}), {{0.0f, 0.5}, {1.0f, 0.5}});
   expectDistribution(weighted.predict({0}), {{0.0f, 2.0 / 3.0}, {1.0f, 1.0 / 3.0}});
   expectDistribution(best.predict({0}), {{0.0f, 1.0}});
+  // Recombined snapshots (--taskcombo) combine the same trees by the other rule.
+  expectDistribution(best.snapshot().recombined(Combination::Average).predict({0}),
+                     {{0.0f, 0.5}, {1.0f, 0.5}});
+  expectDistribution(avg.snapshot().recombined(Combination::WeightedAverage).predict({0}),
+                     {{0.0f, 2.0 / 3.0}, {1.0f, 1.0 / 3.0}});
+  expectDistribution(avg.snapshot().recombined(Combination::Separate).predict({0}), {{1.0f, 1.0}});
+  EXPECT_EQ(avg.snapshot().recombined(Combination::Best).variance({0}), 1.0);
 }
 
 // SEPARATE: tree 0 learns every instance and is the prediction.

@@ -35,6 +35,9 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
                    {"best", "best"},
                    {"separate", "separate"}},
                   "how a forest combines its trees");
+  p.choice("taskcombo", &o->taskcombo, {"same", "average", "weighted", "best", "separate"},
+           "--taskplanner vi: how the forests combine their trees for planning the task phase "
+           "(same: --combo)");
   p.aliasedChoice("planner", &o->planner, plannerRegistry().spellings(), "planner");
   // Upper bounds keep a typo from exhausting memory or planning for hours in one step.
   p.value("nmodels", &o->nmodels, "trees per forest", inRange(1, 1000));
@@ -194,13 +197,39 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
   std::vector<std::string> lambdaAgents = modelBasedList;
   lambdaAgents.push_back("sarsa");
   requireAgent(p, o, "lambda", lambdaAgents);
-  for (const char* option :
-       {"actrate",      "m",           "model",      "planner",    "combo",         "nmodels",
-        "reltrans",     "abstrans",    "v",          "n",          "history",       "rollouts",
-        "tau",          "pathvisits",  "ucb",        "ucbc",       "bonusonce",     "taskucb",
-        "taskucbc",     "depth",       "minprob",    "novelty",    "taskplanner",   "taskdepth",
-        "taskkey",      "taskminprob", "tasksweeps", "taskrecent", "searchthreads", "defer",
-        "deferregions", "taskoutcomes"}) {
+  for (const char* option : {"actrate",
+                             "m",
+                             "model",
+                             "planner",
+                             "combo",
+                             "nmodels",
+                             "reltrans",
+                             "abstrans",
+                             "v",
+                             "n",
+                             "history",
+                             "rollouts",
+                             "tau",
+                             "pathvisits",
+                             "ucb",
+                             "ucbc",
+                             "bonusonce",
+                             "taskucb",
+                             "taskucbc",
+                             "depth",
+                             "minprob",
+                             "novelty",
+                             "taskplanner",
+                             "taskdepth",
+                             "taskkey",
+                             "taskminprob",
+                             "tasksweeps",
+                             "taskrecent",
+                             "searchthreads",
+                             "defer",
+                             "deferregions",
+                             "taskoutcomes",
+                             "taskcombo"}) {
     requireAgent(p, o, option, modelBasedList);
   }
   const bool modelBased = isOneOf(o.agent, modelBasedList);
@@ -231,8 +260,8 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
           "option --taskplanner vi does not take --history (value "
           "iteration plans on states alone)");
     }
-    for (const char* option :
-         {"taskdepth", "taskkey", "taskminprob", "tasksweeps", "taskrecent", "taskoutcomes"}) {
+    for (const char* option : {"taskdepth", "taskkey", "taskminprob", "tasksweeps", "taskrecent",
+                               "taskoutcomes", "taskcombo"}) {
       if (p.given(option) && o.taskplanner != "vi") {
         throw rl_common::OptionError(std::string("option --") + option + " needs --taskplanner vi");
       }
@@ -258,6 +287,15 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
     }
     if (o.agent == "rmax" && o.explore != "unknown") {
       throw rl_common::OptionError("--agent rmax needs --explore unknown");
+    }
+    if (p.given("taskcombo") && !modelRegistry().takesOption(o.model, "taskcombo")) {
+      throw rl_common::OptionError("option --taskcombo applies to --model " +
+                                   rl_common::joinNames(modelRegistry().namesTaking("taskcombo")) +
+                                   ", not to '" + o.model + "'");
+    }
+    if (o.taskcombo != "same" && o.taskcombo != "best" && o.nmodels == 1) {
+      throw rl_common::OptionError("option --taskcombo " + o.taskcombo +
+                                   " needs --nmodels > 1 (one tree has nothing to combine)");
     }
     if (o.combo != "best" && o.nmodels == 1) {
       throw rl_common::OptionError("option --combo " + o.combo +

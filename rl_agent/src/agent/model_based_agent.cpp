@@ -77,6 +77,11 @@ ModelBasedAgent::ModelBasedAgent(const Config& config,
   if (config.taskPlanner) taskPhase_.emplace(config.taskPhase);
 
   model_ = makeModel(*explorer);
+  if (config.taskCombination && (!config.taskPlanner || model_.exploration == nullptr)) {
+    throw std::invalid_argument(
+        "ModelBasedAgent::ModelBasedAgent(): --taskcombo needs --taskplanner vi and a forest "
+        "model (--model tree)");
+  }
   PlannerSettings planning = config.planning;
   planning.lazyViews = deferral_ != nullptr;  // the deferral filters each new view first
   loop_ = makePlanningLoop(config.planner, planning, std::move(model_.model));
@@ -128,7 +133,7 @@ int ModelBasedAgent::planAction(const rl_common::State& s, const rl_common::Stat
                        [this] { return deferral_->viewFilter(); });
   }
   if (taskPlannerActive()) {
-    const int action = taskPhase_->plan(s, learnedModelView());
+    const int action = taskPhase_->plan(s, taskModelView());
     lastRollouts_ = taskPhase_->lastIterations();
     loop_->waitUntil(due);  // keep the action rate
     return action;
@@ -241,6 +246,14 @@ std::shared_ptr<const rl_common::ModelView> ModelBasedAgent::learnedModelView() 
   return std::make_shared<NoHistoryView>(
       std::move(learned), task_.minFeatures.size(),
       static_cast<std::size_t>(config_.history * task_.numActions));
+}
+
+std::shared_ptr<const rl_common::ModelView> ModelBasedAgent::taskModelView() const {
+  if (!config_.taskCombination) return learnedModelView();
+  const auto view = modelView();  // a forest model: the option checks say so
+  if (view == nullptr) return nullptr;
+  // --taskplanner vi takes no --history, so the recombined forests take states as they are.
+  return view->model().recombined(*config_.taskCombination);
 }
 
 void ModelBasedAgent::savePolicy(const std::string& filename) {

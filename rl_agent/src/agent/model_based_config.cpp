@@ -94,6 +94,7 @@ ModelBasedConfig modelBasedConfig(const AgentOptions& o,
 
   c.taskPlanner = o.taskplanner == "vi";
   c.taskKey = o.taskkey;
+  if (o.taskcombo != "same") c.taskCombination = combinationFromName(o.taskcombo);
   TaskPhasePlanner::Config& task = c.taskPhase;
   task.table = dp;
   task.table.maxSteps = o.taskdepth;

@@ -109,6 +109,15 @@ std::shared_ptr<const FactoredModel::View> FactoredModel::factoredView() const {
   return v;
 }
 
+std::shared_ptr<const FactoredModel::View> FactoredModel::View::recombined(
+    Combination combination) const {
+  auto v = std::make_shared<View>(*this);
+  for (auto& f : v->features_) f = f.recombined(combination);
+  v->reward_ = reward_.recombined(combination);
+  v->terminal_ = terminal_.recombined(combination);
+  return v;
+}
+
 std::vector<float> FactoredModel::View::treeInput(const rl_common::State& input, int action) const {
   const std::size_t inputLen = config_->featMin.size() + config_->extraInputs;
   if (input.size() != inputLen) {

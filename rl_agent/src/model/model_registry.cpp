@@ -71,7 +71,7 @@ const ModelRegistry& modelRegistry() {
   static const ModelRegistry registry = [] {
     ModelRegistry reg("model");
     reg.add("tree", treeModel, "random forests of C4.5 trees (TEXPLORE)",
-            {kAllExplorersFact, kBinnedInputsFact});
+            {kAllExplorersFact, kBinnedInputsFact}, {"taskcombo"});
     reg.add("tabular", tabularModel, "counts per state-action (R-MAX)",
             {kUnknownExplorerFact, kBinnedInputsFact});
     reg.add("m5tree", m5Model, "regression trees with linear leaves (M5)");

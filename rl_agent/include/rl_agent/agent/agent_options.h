@@ -84,6 +84,11 @@ struct AgentOptions {
   /// StateSpacePlanner::Config::keyMarginal) or "joint" (full states, each a product over all
   /// features: the runs before this option). Without --taskkey every feature is a key.
   std::string taskoutcomes = "key";
+  /// --taskplanner vi: how the forests combine their trees for the task phase's planning:
+  /// "same" (--combo) or a --combo value (e.g. average: explore on tree 0 with --combo
+  /// separate, then plan the task on the whole forest, whose spread keeps rare outcomes such
+  /// as a door opening above --taskminprob).
+  std::string taskcombo = "same";
 };
 
 /// True if --nstates bins some feature.
@@ -115,9 +120,9 @@ void applyAgentDefaults(const rl_common::OptionParser& parser, AgentOptions* opt
 /// accepted by every agent that acts epsilon-greedily; --combo other than best needs more than
 /// one tree; rmax needs a tabular model and --explore unknown; an explorer's own options (--v,
 /// --n, --novelty, --tau, --epsilon for model-based agents) need an explorer whose registry
-/// entry reads them (e.g. --tau: boltzmann); the tabular model takes the explorers greedy, epsilongreedy, random, boltzmann and unknown,
-/// the m5tree model the first four. Throws rl_common::OptionError naming the option and
-/// where it applies.
+/// entry reads them (e.g. --tau: boltzmann); the tabular model takes the explorers greedy,
+/// epsilongreedy, random, boltzmann and unknown, the m5tree model the first four. Throws
+/// rl_common::OptionError naming the option and where it applies.
 void checkAgentOptions(const rl_common::OptionParser& parser, const AgentOptions& options);
 
 }  // namespace rl_agent

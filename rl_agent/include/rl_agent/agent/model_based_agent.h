@@ -134,6 +134,9 @@ class ModelBasedAgent : public rl_common::Agent, public RewardBreakdownSource {
   const Config& config() const { return config_; }
 
  private:
+  /// The model the task phase plans on: learnedModelView(), its forests recombined as
+  /// --taskcombo says.
+  std::shared_ptr<const rl_common::ModelView> taskModelView() const;
   /// Gives the search planners the UCB bound of the current phase (--ucb exploring, --taskucb
   /// not).
   void applyUcbBound();

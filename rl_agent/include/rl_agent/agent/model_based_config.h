@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,8 @@ struct ModelBasedConfig {
   Ucb taskUcb;
   bool taskPlanner = false;  ///< --taskplanner vi: the task phase plans by value iteration
   TaskPhasePlanner::Config taskPhase;
+  /// --taskcombo: the forests' combination for the task phase's planning; unset: the model's.
+  std::optional<Combination> taskCombination;
   std::vector<int> taskKey;  ///< --taskkey (checked against the task's features)
   std::uint64_t seed = 0;    ///< every part's seed derives from it
 };

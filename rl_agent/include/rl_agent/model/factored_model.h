@@ -81,6 +81,9 @@ class FactoredModel : public rl_common::MDPModel {
     /// value).
     Distribution featureDistribution(const rl_common::State& input, int action,
                                      std::size_t feature) const;
+    /// The same forests, each combined as `combination` (--taskcombo). Its revisions are this
+    /// view's: do not refresh predictions of one from the other (query() it).
+    std::shared_ptr<const View> recombined(Combination combination) const;
     /// Number of experiences learned when the view was taken.
     std::size_t numExperiences() const { return experiences_; }
 

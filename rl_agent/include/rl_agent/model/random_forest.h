@@ -61,6 +61,12 @@ class RandomForest {
     /// planner's queries need both; the values are the same as from the two calls).
     Distribution predict(const std::vector<float>& input, double* variance) const;
     std::size_t numTrees() const { return trees_.size(); }
+    /// The same trees, combined as `combination` (the trees are shared, not copied).
+    Snapshot recombined(Combination combination) const {
+      Snapshot s = *this;
+      s.combination_ = combination;
+      return s;
+    }
 
    private:
     friend class RandomForest;
