@@ -8,23 +8,24 @@
 #include <string>
 #include <vector>
 
+#include "rl_agent/learning_defaults.h"
 #include "rl_common/option_parser.h"
 
 namespace rl_agent {
 
 struct AgentOptions {
-  std::string agent = "texplore";  ///< registry name (--agent)
-  std::uint64_t seed = 1;          ///< seed of the agent's own random source
-  float gamma = 0.99f;             ///< discount factor (--gamma, --discountfactor)
-  float epsilon = 0.1f;            ///< exploration rate of epsilon-greedy action selection
-  float alpha = 0.3f;              ///< learning rate (qlearner, sarsa, dyna)
-  float initialvalue = 0.0f;       ///< initial Q-value (qlearner, sarsa, dyna)
-  float actrate = 10.0f;           ///< actions per second of the real-time agent (Hz)
-  float lambda = 0.1f;             ///< UCT(lambda) mixing, or Sarsa(lambda) trace decay
-  int m = 5;                       ///< R-MAX visits before a state-action is known
-  std::string model = "tree";      ///< model type
-  std::string explore = "greedy";  ///< exploration type
-  std::string combo = "best";      ///< forest combination
+  std::string agent = "texplore";      ///< registry name (--agent)
+  std::uint64_t seed = 1;              ///< seed of the agent's own random source
+  float gamma = defaults::kGamma;      ///< discount factor (--gamma, --discountfactor)
+  float epsilon = defaults::kEpsilon;  ///< exploration rate of epsilon-greedy action selection
+  float alpha = defaults::kAlpha;      ///< learning rate (qlearner, sarsa, dyna)
+  float initialvalue = defaults::kInitialValue;  ///< initial Q-value (qlearner, sarsa, dyna)
+  float actrate = 10.0f;                         ///< actions per second of the real-time agent (Hz)
+  float lambda = defaults::kLambda;  ///< UCT(lambda) mixing, or Sarsa(lambda) trace decay
+  int m = defaults::kKnownVisits;    ///< R-MAX visits before a state-action is known
+  std::string model = "tree";        ///< model type
+  std::string explore = "greedy";    ///< exploration type
+  std::string combo = "best";        ///< forest combination
   std::string planner = "parallel-uct";
   int nmodels = 1;                      ///< trees per forest
   bool reltrans = true;                 ///< predict relative changes (--reltrans / --abstrans)
@@ -41,7 +42,8 @@ struct AgentOptions {
   /// Real-time UCT: planning threads, each searching its own tree (root-parallel search);
   /// 0: one per core (the model thread beside them is idle most of the time).
   int searchthreads = 0;
-  float tau = 0.2f;  ///< Boltzmann temperature (--explore boltzmann; 0.2 in the paper)
+  /// Boltzmann temperature (--explore boltzmann; 0.2 in the paper)
+  float tau = defaults::kBoltzmannTau;
   /// UCT: count the path's choices at a state met again on a rollout (UctPlanner::Config::
   /// countPathVisits); off by default, as the original.
   bool pathvisits = false;

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "rl_agent/learning_defaults.h"
 #include "rl_common/agent.h"
 #include "rl_common/random.h"
 
@@ -23,10 +24,10 @@ class QLearner : public rl_common::Agent {
  public:
   struct Config {
     int numActions = 0;
-    float gamma = 0.99f;
-    float initialValue = 0.0f;
-    float alpha = 0.3f;
-    float epsilon = 0.1f;
+    float gamma = defaults::kGamma;
+    float initialValue = defaults::kInitialValue;
+    float alpha = defaults::kAlpha;
+    float epsilon = defaults::kEpsilon;
   };
 
   /// Throws std::invalid_argument if numActions < 1 or a rate is outside [0, 1].

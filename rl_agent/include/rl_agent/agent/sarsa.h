@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "rl_agent/agent/q_table.h"
+#include "rl_agent/learning_defaults.h"
 #include "rl_common/agent.h"
 #include "rl_common/random.h"
 
@@ -29,11 +30,11 @@ class Sarsa : public rl_common::Agent {
  public:
   struct Config {
     int numActions = 0;
-    float gamma = 0.99f;
-    float initialValue = 0.0f;
-    float alpha = 0.3f;
-    float epsilon = 0.1f;
-    float lambda = 0.1f;
+    float gamma = defaults::kGamma;
+    float initialValue = defaults::kInitialValue;
+    float alpha = defaults::kAlpha;
+    float epsilon = defaults::kEpsilon;
+    float lambda = defaults::kLambda;
   };
 
   /// Throws std::invalid_argument if numActions < 1 or a rate is outside [0, 1].

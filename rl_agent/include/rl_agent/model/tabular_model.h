@@ -25,6 +25,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "rl_agent/learning_defaults.h"
 #include "rl_agent/planner/state_hash.h"
 #include "rl_common/mdp_model.h"
 
@@ -34,10 +35,10 @@ class TabularModel : public rl_common::MDPModel {
  public:
   struct Config {
     int numActions = 0;
-    int numFeatures = 0;      ///< d: features of a next state
-    int m = 5;                ///< visits before a state-action is known
-    bool optimistic = false;  ///< R-MAX optimism for unknown state-actions
-    float rmax = 1.0f;        ///< reward predicted for unknown state-actions when optimistic
+    int numFeatures = 0;             ///< d: features of a next state
+    int m = defaults::kKnownVisits;  ///< visits before a state-action is known
+    bool optimistic = false;         ///< R-MAX optimism for unknown state-actions
+    float rmax = 1.0f;               ///< reward predicted for unknown state-actions when optimistic
   };
 
   /// Counts for one state-action.

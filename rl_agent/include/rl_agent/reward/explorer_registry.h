@@ -23,6 +23,7 @@
 #include <memory>
 #include <vector>
 
+#include "rl_agent/learning_defaults.h"
 #include "rl_agent/reward/intrinsic_reward.h"
 #include "rl_agent/reward/learned_reward.h"
 #include "rl_common/registry.h"
@@ -35,9 +36,9 @@ struct ExplorerSettings {
   /// VANIR's novelty of (s, a) against the states where a was taken (false, the original), or
   /// of s against the states where any action was taken (true).
   bool stateNovelty = false;
-  int m = 5;          ///< visits before a state-action is known
-  float rmax = 1.0f;  ///< optimistic value for unknown state-actions
-  float tau = 0.2f;   ///< Boltzmann temperature
+  int m = defaults::kKnownVisits;       ///< visits before a state-action is known
+  float rmax = 1.0f;                    ///< optimistic value for unknown state-actions
+  float tau = defaults::kBoltzmannTau;  ///< Boltzmann temperature
   /// Declared feature ranges (the competence and prederror regions need them).
   std::vector<float> featMin, featMax;
   std::uint64_t seed = 1;  ///< seed of the random regions
@@ -51,7 +52,7 @@ struct Explorer {
   bool epsilonGreedy = false;
   bool randomActions = false;  ///< act uniformly at random (the model still learns)
   bool boltzmann = false;      ///< softmax on the planner's Q-values with temperature tau
-  float tau = 0.2f;
+  float tau = defaults::kBoltzmannTau;
   /// The agent's --defer when not given: steps a region is explored before a one-way step
   /// (StepDeferral); 0: never, as the original.
   long deferSteps = 0;
