@@ -123,31 +123,8 @@ AgentNode::AgentNode(ros::NodeHandle nh, const AgentOptions& options,
     }
   }
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
-  // An action published before the environment is connected is lost, and the pair then waits
-  // on each other for good (an agent restarted beside a running env acts on its latched state
-  // at once; an observer connected first does not make the env hear it): such an action is
-  // held for the node that sent the state, and sent to it alone when it connects. roscpp opens
-  // a connection (which hears every publish) before it runs the connection's callback, so the
-  // callbacks still pending when an action goes out are counted: those connections heard it.
-  actionPub_ = nh_.advertise<rl_msgs::RLAction>(
-      "rl_agent/rl_action", 1,
-      [this](const ros::SingleSubscriberPublisher& pub) {
-        const std::string name = pub.getSubscriberName();
-        actionSubscribers_.insert(name);
-        const bool heardIt = unannouncedAtPublish_ > 0;
-        if (heardIt) --unannouncedAtPublish_;
-        if (!heldAction_ || name != heldFor_) return;
-        if (!heardIt) {
-          pub.publish(*heldAction_);
-          ROS_INFO_STREAM_NAMED("agent",
-                                "sent the held action " << heldAction_->action << " to " << name);
-        }
-        heldAction_.reset();
-      },
-      [this](const ros::SingleSubscriberPublisher& pub) {
-        actionSubscribers_.erase(pub.getSubscriberName());
-      });
-  infoPub_ = nh_.advertise<rl_msgs::RLExperimentInfo>("rl_agent/rl_experiment_info", 1);
+  actionPub_.advertise(nh_, "rl_agent/rl_action", 1, "action");
+  infoPub_.advertise(nh_, "rl_agent/rl_experiment_info", 1, "episode end");
   breakdownPub_ = nh_.advertise<rl_msgs::RLRewardBreakdown>("rl_agent/rl_reward_breakdown", 10);
   descriptionSub_ =
       nh_.subscribe("rl_env/rl_env_description", 1, &AgentNode::onDescription, this, hints);
@@ -376,7 +353,7 @@ void AgentNode::act(const rl_msgs::RLStateReward& state) {
     info.episode_number = e.index;
     info.episode_reward = e.reward;
     info.number_actions = static_cast<int>(e.actions);
-    infoPub_.publish(info);
+    infoPub_.publish(info, stateSender_);  // the env resets on it: held until it hears
     return;
   }
   const int action = driver_->act(state.state, state.reward);
@@ -395,19 +372,12 @@ void AgentNode::act(const rl_msgs::RLStateReward& state) {
   rl_msgs::RLAction a;
   a.action = action;
   // Everyone connected hears it; the state's sender, if not connected yet, when it connects.
-  // Counted before the publish: a connection counted here certainly hears it.
-  const int connections = static_cast<int>(actionPub_.getNumSubscribers());
-  unannouncedAtPublish_ = std::max(0, connections - static_cast<int>(actionSubscribers_.size()));
-  actionPub_.publish(a);
-  heldAction_.reset();
-  if (!stateSender_.empty() && actionSubscribers_.count(stateSender_) == 0) {
-    heldAction_ = a;
-    heldFor_ = stateSender_;
+  if (actionPub_.publish(a, stateSender_)) {
     // Once per sender: a relay (e.g. rosbag play) that never subscribes would repeat it.
-    ROS_INFO_STREAM_COND_NAMED(heldFor_ != heldLoggedFor_, "agent",
+    ROS_INFO_STREAM_COND_NAMED(stateSender_ != heldLoggedFor_, "agent",
                                "holding action " << action << " for " << stateSender_
                                                  << " until it subscribes to rl_action");
-    heldLoggedFor_ = heldFor_;
+    heldLoggedFor_ = stateSender_;
   }
 }
 

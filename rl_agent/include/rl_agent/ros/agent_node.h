@@ -36,6 +36,7 @@
 #include <rl_msgs/RLAction.h>
 #include <rl_msgs/RLEnvDescription.h>
 #include <rl_msgs/RLEnvSeedExperience.h>
+#include <rl_msgs/RLExperimentInfo.h>
 #include <rl_msgs/RLStateReward.h>
 #include <rl_msgs/Reset.h>
 #include <ros/ros.h>
@@ -48,6 +49,7 @@
 
 #include "rl_agent/agent/agent_options.h"
 #include "rl_agent/journal/experience_journal.h"
+#include "rl_agent/ros/held_publisher.h"
 #include "rl_common/agent.h"
 #include "rl_common/environment.h"
 #include "rl_common/episode_driver.h"
@@ -125,18 +127,13 @@ class AgentNode {
   std::vector<rl_msgs::RLEnvSeedExperience::ConstPtr> earlySeeds_;  ///< before any description
   rl_msgs::RLStateReward::ConstPtr earlyState_;                     ///< the latest such state
   ros::Subscriber descriptionSub_, stateSub_, seedSub_;
-  ros::Publisher actionPub_, infoPub_, breakdownPub_;
-  /// Who hears rl_action: the subscribers whose connection callback has run, and how many of
-  /// the connections open when the last action went out had not run theirs yet (those heard it).
-  std::set<std::string> actionSubscribers_;
-  int unannouncedAtPublish_ = 0;
+  /// The action and the episode end answer the latest state's sender, and are held for it
+  /// while it is not connected (HeldPublisher).
+  HeldPublisher<rl_msgs::RLAction> actionPub_;
+  HeldPublisher<rl_msgs::RLExperimentInfo> infoPub_;
+  ros::Publisher breakdownPub_;
   /// The node that sent the latest state (the environment, or whoever plays it).
   std::string stateSender_;
-  /// The latest action, if the node whose state it answers was not connected to rl_action when
-  /// it went out (an observer such as rosbag or a test may connect first): sent to that node
-  /// alone when it connects.
-  std::optional<rl_msgs::RLAction> heldAction_;
-  std::string heldFor_;
   std::string heldLoggedFor_;  ///< the sender the last "holding" line named
   ros::ServiceServer resetSrv_;
   /// Malformed messages: one warning each, at most 10 a second (a burst is counted, not logged).
