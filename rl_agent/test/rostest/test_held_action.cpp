@@ -1,8 +1,9 @@
-// The agent node's first action reaches an environment that subscribes late, even when an
-// observer heard it first (agent_held_action.test).
+// The agent node's first action, and its episode-end message, reach an environment that
+// subscribes late, even when an observer heard them first (agent_held_action.test).
 #include <gtest/gtest.h>
 #include <rl_msgs/RLAction.h>
 #include <rl_msgs/RLEnvDescription.h>
+#include <rl_msgs/RLExperimentInfo.h>
 #include <rl_msgs/RLStateReward.h>
 #include <ros/ros.h>
 
@@ -15,14 +16,14 @@ using rl_common::spinUntil;
 
 namespace {
 
-// Subscribers of rl_agent/rl_action known to the master (the observer's subscription).
-int actionSubscriberCount() {
+// Subscribers of `topic` known to the master (the observer's subscriptions).
+int subscriberCount(const std::string& topic) {
   XmlRpc::XmlRpcValue request, response, payload;
   request[0] = ros::this_node::getName();
   if (!ros::master::execute("getSystemState", request, response, payload, false)) return 0;
   const XmlRpc::XmlRpcValue& subscribers = payload[1];
   for (int i = 0; i < subscribers.size(); ++i) {
-    if (static_cast<std::string>(subscribers[i][0]) == "/rl_agent/rl_action") {
+    if (static_cast<std::string>(subscribers[i][0]) == topic) {
       return subscribers[i][1].size();
     }
   }
@@ -49,7 +50,13 @@ TEST(AgentNode, HoldsItsFirstActionUntilTheEnvironmentSubscribes) {
   // An observer (this binary run as the node `observer`, like rosbag record) hears the agent's
   // actions before the environment does: the agent must still hold its action for the node
   // whose state it answers (before, one listener was enough to send it, and the env lost it).
-  ASSERT_TRUE(spinUntil([&] { return actionSubscriberCount() > 0; }, 20.0)) << "no observer";
+  ASSERT_TRUE(spinUntil(
+      [&] {
+        return subscriberCount("/rl_agent/rl_action") > 0 &&
+               subscriberCount("/rl_agent/rl_experiment_info") > 0;
+      },
+      20.0))
+      << "no observer";
   ASSERT_TRUE(spinUntil([&] { return states.getNumSubscribers() > 0; }, 20.0)) << "no agent";
   ros::WallDuration(1.0).sleep();  // the agent's connection callback for the observer has run
   rl_msgs::RLStateReward s;
@@ -73,17 +80,41 @@ TEST(AgentNode, HoldsItsFirstActionUntilTheEnvironmentSubscribes) {
   s.state = {2, 2};
   states.publish(s);
   ASSERT_TRUE(spinUntil([&] { return actions.size() == 2; }, 10.0)) << "no answer to state 2";
+
+  // The episode ends while this node (the env) does not listen to rl_experiment_info yet, only
+  // the observer does: the env resets on that message, so the agent holds it for the state's
+  // sender too (before, it was lost, and an agent restarted beside a running env stalled).
+  s.state = {3, 2};
+  s.terminal = true;
+  states.publish(s);
+  ros::WallDuration(2.0).sleep();
+  std::vector<rl_msgs::RLExperimentInfo> infos;
+  auto infoSub = nh.subscribe<rl_msgs::RLExperimentInfo>(
+      "rl_agent/rl_experiment_info", 10,
+      [&](const rl_msgs::RLExperimentInfo::ConstPtr& m) { infos.push_back(*m); });
+  ASSERT_TRUE(spinUntil([&] { return !infos.empty(); }, 10.0))
+      << "the episode end published before the environment subscribed was lost";
+  EXPECT_EQ(infos[0].episode_number, 0);
+  EXPECT_EQ(infos[0].number_actions, 2);
+  ros::WallDuration(1.0).sleep();
+  ros::spinOnce();
+  EXPECT_EQ(infos.size(), 1u) << "the held episode end was sent twice";
+  EXPECT_EQ(actions.size(), 2u) << "the agent acted on a terminal state";
 }
 
 int main(int argc, char** argv) {
   if (argc > 1 && std::string(argv[1]) == "--observe") {
-    // The observer: listens to the agent's actions and does nothing else.
+    // The observer: listens to the agent's actions and episode ends and does nothing else.
     ros::init(argc, argv, "observer");
     ros::NodeHandle nh;
     auto sub =
         nh.subscribe<rl_msgs::RLAction>("rl_agent/rl_action", 10,
                                         boost::function<void(const rl_msgs::RLAction::ConstPtr&)>(
                                             [](const rl_msgs::RLAction::ConstPtr&) {}));
+    auto infoSub = nh.subscribe<rl_msgs::RLExperimentInfo>(
+        "rl_agent/rl_experiment_info", 10,
+        boost::function<void(const rl_msgs::RLExperimentInfo::ConstPtr&)>(
+            [](const rl_msgs::RLExperimentInfo::ConstPtr&) {}));
     ros::spin();
     return 0;
   }
