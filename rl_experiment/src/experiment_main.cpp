@@ -42,8 +42,7 @@ int submitToSlurm(const rl_common::OptionParser& parser, const rl_experiment::Sl
 }  // namespace
 
 int main(int argc, char** argv) {
-  rl_experiment::ExperimentConfig config;
-  config.agent.agent = "qlearner";
+  rl_experiment::ExperimentConfig config;  // --agent defaults to texplore, as the agent node's
   bool listAgents = false;
   bool check = false;
   rl_common::OptionParser parser("experiment", "--agent <type> --env <type> [options]");

@@ -206,6 +206,16 @@ TEST(Experiment, CheckBuildsTheAgentForTheTask) {
   EXPECT_EQ(shell(check + "--rollouts 5 --v 1 --n 3 --deferregions 2 --check").first, 0);
 }
 
+TEST(Experiment, AgentDefaultsToTexploreAsTheAgentNodes) {
+  // One default for --agent (AgentOptions): VANIR's options are valid without --agent, and a
+  // model-free agent's are not.
+  const std::string bin = std::string(EXPERIMENT_BIN) + " --env lightworld ";
+  EXPECT_EQ(shell(bin + "--v 1 --n 3 --check").first, 0);
+  const auto [status, text] = shell(bin + "--alpha 0.5 --check");
+  EXPECT_EQ(status, 2);
+  EXPECT_NE(text.find("not to 'texplore'"), std::string::npos) << text;
+}
+
 TEST(Experiment, OriginalFormatPrintsBareNumbersOnStderr) {
   const auto [status, text] = shell(std::string(EXPERIMENT_BIN) +
                                         " --agent qlearner --env lightworld --steps 40 --format "
