@@ -136,6 +136,10 @@ TEST(AgentOptions, ComparisonExplorersAndTau) {
                    "--taskcombo", "average"})
                 .taskcombo,
             "average");
+  EXPECT_EQ(parse({"--agent", "texplore", "--combo", "separate", "--taskplanner", "vi",
+                   "--taskcombo", "bagged"})
+                .taskcombo,
+            "bagged");
   EXPECT_NE(errorOf({"--agent", "texplore", "--taskcombo", "average"}).find("--taskplanner vi"),
             std::string::npos);
   EXPECT_NE(errorOf({"--agent", "modelbased", "--model", "tabular", "--taskplanner", "vi",

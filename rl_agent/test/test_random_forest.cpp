@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -184,6 +185,42 @@ TEST(RandomForest, SeparatePlansWithTreeZero) {
   // The empty trees disagree with tree 0 where it predicts 1.
   EXPECT_EQ(f.snapshot().variance({1}), 0.0);
   EXPECT_GT(f.snapshot().variance({6}), 0.0);
+}
+
+// BAGGED (--taskcombo bagged): the average of the trees other than SEPARATE's planning tree.
+TEST(RandomForest, BaggedAveragesTheTreesBesidesThePlanningTree) {
+  RandomForest f(forestConfig(3, 1.0, Combination::Separate), 4);
+  for (int k = 0; k < 40; ++k)
+    f.addInstance({static_cast<float>(k % 8)}, static_cast<float>(k % 8 > 4));
+  const RandomForest::Snapshot bagged = f.snapshot().recombined(Combination::Bagged);
+  for (int x = 0; x < 8; ++x) {
+    const std::vector<Distribution> trees = f.snapshot().treePredictions({static_cast<float>(x)});
+    std::map<float, double> mean;
+    for (std::size_t i = 1; i < trees.size(); ++i) {
+      for (const auto& [v, p] : trees[i]) mean[v] += p / 2.0;
+    }
+    expectDistribution(bagged.predict({static_cast<float>(x)}),
+                       Distribution(mean.begin(), mean.end()));
+  }
+  // Tree 0 does not count: with w = 0 only it learns, and the bagged trees' empty leaves
+  // predict 0 where it predicts 1.
+  RandomForest g(forestConfig(3, 0.0, Combination::Separate), 4);
+  for (int k = 0; k < 40; ++k)
+    g.addInstance({static_cast<float>(k % 8)}, static_cast<float>(k % 8 > 4));
+  expectDistribution(g.predict({6}), {{1.0f, 1.0}});
+  expectDistribution(g.snapshot().recombined(Combination::Bagged).predict({6}), {{0.0f, 1.0}});
+  expectDistribution(g.snapshot().recombined(Combination::Average).predict({6}),
+                     {{0.0f, 2.0 / 3.0}, {1.0f, 1.0 / 3.0}});
+  // Every tree of a forest without a planning tree is bagged: the plain average.
+  RandomForest a(forestConfig(3, 0.5, Combination::Average), 4);
+  for (int k = 0; k < 40; ++k)
+    a.addInstance({static_cast<float>(k % 8)}, static_cast<float>(k % 8 > 4));
+  for (int x = 0; x < 8; ++x) {
+    expectDistribution(
+        a.snapshot().recombined(Combination::Bagged).predict({static_cast<float>(x)}),
+        a.predict({static_cast<float>(x)}));
+  }
+  EXPECT_EQ(combinationFromName("bagged"), Combination::Bagged);
 }
 
 TEST(RandomForest, KlDivergenceByHand) {

@@ -35,9 +35,11 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
                    {"best", "best"},
                    {"separate", "separate"}},
                   "how a forest combines its trees");
-  p.choice("taskcombo", &o->taskcombo, {"same", "average", "weighted", "best", "separate"},
+  p.choice("taskcombo", &o->taskcombo,
+           {"same", "average", "weighted", "best", "separate", "bagged"},
            "--taskplanner vi: how the forests combine their trees for planning the task phase "
-           "(same: --combo)");
+           "(same: --combo; bagged: the average of the trees other than --combo separate's "
+           "planning tree)");
   p.aliasedChoice("planner", &o->planner, plannerRegistry().spellings(), "planner");
   // Upper bounds keep a typo from exhausting memory or planning for hours in one step.
   p.value("nmodels", &o->nmodels, "trees per forest", inRange(1, 1000));

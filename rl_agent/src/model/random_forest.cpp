@@ -64,8 +64,9 @@ Combination combinationFromName(const std::string& name) {
   if (name == "weighted") return Combination::WeightedAverage;
   if (name == "best") return Combination::Best;
   if (name == "separate") return Combination::Separate;
+  if (name == "bagged") return Combination::Bagged;
   throw std::invalid_argument("combinationFromName(): unknown combination '" + name +
-                              "'; valid: average, weighted, best, separate");
+                              "'; valid: average, weighted, best, separate, bagged");
 }
 
 double klDivergence(const Distribution& p, const Distribution& q) {
@@ -138,6 +139,13 @@ Distribution RandomForest::Snapshot::combined(
       }
       break;  // no tree has been right yet: plain average
     }
+    case Combination::Bagged:
+      if (planningTree_ && leaves.size() > 1) {
+        std::vector<double> w(leaves.size(), 1.0 / static_cast<double>(leaves.size() - 1));
+        w[0] = 0.0;
+        return combine(leaves, w);
+      }
+      break;
     case Combination::Average:
       break;
   }
@@ -214,6 +222,7 @@ RandomForest::Snapshot RandomForest::snapshot() const {
   for (const C45Tree& t : trees_) s.trees_.push_back(t.snapshot());
   s.accuracy_ = accuracy_;
   s.combination_ = config_.combination;
+  s.planningTree_ = config_.combination == Combination::Separate;
   return s;
 }
 

@@ -11,6 +11,9 @@
  *   BEST      the tree with the highest running accuracy
  *   SEPARATE  one tree (tree 0) trained on every instance for planning; the forest for variance
  *             (tree 0 is a full C4.5 tree, featPct 0, as the original's SepPlanExplore)
+ *   BAGGED    the average of the bagged trees only: trees 1..m-1 of a SEPARATE forest, every
+ *             tree of another (the suite's; a recombination for --taskcombo, so that a forest
+ *             grown for SEPARATE can be planned on as the AVERAGE of trees grown as AVERAGE's)
  * where acc_i <- acc_i t/(t+1) + [P_i(y) > 0.5]/(t+1) is updated before training on y.
  *
  * The disagreement of the trees (the VANIR variance, paper §4.2, ORIGINAL.md §5.2):
@@ -33,9 +36,10 @@
 
 namespace rl_agent {
 
-enum class Combination { Average, WeightedAverage, Best, Separate };
+enum class Combination { Average, WeightedAverage, Best, Separate, Bagged };
 
-/// "average", "weighted", "best", "separate" (the --combo values); throws otherwise.
+/// "average", "weighted", "best", "separate" (the --combo values), "bagged" (--taskcombo
+/// only); throws otherwise.
 Combination combinationFromName(const std::string& name);
 
 class RandomForest {
@@ -76,6 +80,8 @@ class RandomForest {
     std::vector<C45Tree::Snapshot> trees_;
     std::vector<double> accuracy_;
     Combination combination_ = Combination::Average;
+    /// Tree 0 is SEPARATE's full planning tree, not a bagged one (kept when recombined).
+    bool planningTree_ = false;
   };
 
   /// `seed` seeds the forest's sampling; each tree gets its own derived stream. The trees
