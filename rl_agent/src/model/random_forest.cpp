@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -96,6 +97,15 @@ double disagreement(const std::vector<const Distribution*>& p) {
   return sum / static_cast<double>(m * (m - 1)) / kLn100;
 }
 
+// Weight 1/(n - first) for trees first..n-1, 0 before: a per-thread list, no allocation per
+// query (the planner's predictions come through here).
+const std::vector<double>& equalWeights(std::size_t n, std::size_t first) {
+  thread_local std::vector<double> w;
+  w.assign(n, 1.0 / static_cast<double>(n - first));
+  std::fill(w.begin(), w.begin() + static_cast<std::ptrdiff_t>(first), 0.0);
+  return w;
+}
+
 // The leaves of one query: reused across a thread's queries (no allocation per query).
 std::vector<const Distribution*>& scratchLeaves() {
   thread_local std::vector<const Distribution*> leaves;
@@ -140,17 +150,13 @@ Distribution RandomForest::Snapshot::combined(
       break;  // no tree has been right yet: plain average
     }
     case Combination::Bagged:
-      if (planningTree_ && leaves.size() > 1) {
-        std::vector<double> w(leaves.size(), 1.0 / static_cast<double>(leaves.size() - 1));
-        w[0] = 0.0;
-        return combine(leaves, w);
-      }
+      if (planningTree_ && leaves.size() > 1)
+        return combine(leaves, equalWeights(leaves.size(), 1));
       break;
     case Combination::Average:
       break;
   }
-  return combine(leaves,
-                 std::vector<double>(trees_.size(), 1.0 / static_cast<double>(trees_.size())));
+  return combine(leaves, equalWeights(trees_.size(), 0));
 }
 
 Distribution RandomForest::Snapshot::predict(const std::vector<float>& input) const {
