@@ -47,13 +47,29 @@ TEST(AgentOptions, OriginalDefaults) {
 TEST(AgentOptions, TexploreDefaultsAndVanir) {
   AgentOptions o = parse({"--agent", "texplore"});
   EXPECT_EQ(o.nmodels, 5);
-  EXPECT_EQ(o.combo, "average");
+  EXPECT_EQ(o.combo, "separate");  // the suite's forest; the original's is --combo average
+  EXPECT_EQ(o.taskcombo, "same");  // UCT plans the task on the forest it explored on
+  EXPECT_EQ(o.defer, 0);           // one-way steps are not put off, as the original
   EXPECT_EQ(o.explore, "greedy");  // no v, n: plain TEXPLORE
   EXPECT_EQ(o.m, 0);
   o = parse({"--agent", "texplore", "--v", "1", "--n", "3"});
   EXPECT_EQ(o.explore, "variancenovelty");
+  EXPECT_EQ(o.combo, "separate");
+  EXPECT_EQ(o.defer, 0);
   EXPECT_FLOAT_EQ(o.v, 1.0f);
   EXPECT_FLOAT_EQ(o.n, 3.0f);
+  // Value iteration plans the task on the separate forest's average, unless told otherwise.
+  EXPECT_EQ(parse({"--agent", "texplore", "--taskplanner", "vi"}).taskcombo, "average");
+  EXPECT_EQ(parse({"--agent", "texplore", "--combo", "average", "--taskplanner", "vi"}).taskcombo,
+            "same");
+  EXPECT_EQ(parse({"--agent", "texplore", "--taskplanner", "vi", "--taskcombo", "same"}).taskcombo,
+            "same");
+  // The original's TEXPLORE: --combo average; one tree: best (nothing to combine).
+  EXPECT_EQ(parse({"--agent", "texplore", "--combo", "average"}).combo, "average");
+  EXPECT_EQ(parse({"--agent", "texplore", "--nmodels", "1"}).combo, "best");
+  EXPECT_NE(errorOf({"--agent", "texplore", "--nmodels", "1", "--combo", "separate"})
+                .find("--combo separate needs --nmodels > 1"),
+            std::string::npos);
   o = parse({"-agent", "texplore", "-b", "2"});  // --b is the original's alias of --v
   EXPECT_FLOAT_EQ(o.v, 2.0f);
   o = parse({"--agent", "texplore", "--nmodels", "3"});  // the user's value wins
@@ -315,15 +331,14 @@ TEST(AgentOptions, SearchThreads) {
             std::string::npos);
 }
 
-TEST(AgentOptions, DeferIsTheExplorersOwnUnlessGiven) {
-  EXPECT_EQ(parse({"--agent", "texplore", "--v", "1", "--n", "3"}).defer, -1);
-  EXPECT_EQ(parse({"--agent", "texplore", "--v", "1", "--n", "3", "--defer", "0"}).defer, 0);
+TEST(AgentOptions, DeferIsOffUnlessGiven) {
+  EXPECT_EQ(parse({"--agent", "texplore", "--v", "1", "--n", "3"}).defer, 0);
+  EXPECT_EQ(parse({"--agent", "texplore", "--v", "1", "--n", "3", "--defer", "300"}).defer, 300);
   EXPECT_EQ(parse({"--agent", "texplore", "--defer", "150"}).defer, 150);
   EXPECT_NE(errorOf({"--agent", "texplore", "--defer", "-1"}), "");
   EXPECT_NE(errorOf({"--agent", "qlearner", "--defer", "300"}), "");
   EXPECT_NE(errorOf({"--agent", "texplore", "--defer", "300", "--history", "2"}).find("history"),
             std::string::npos);
-  // Not given, a history only turns the explorer's deferral off.
   EXPECT_EQ(errorOf({"--agent", "texplore", "--v", "1", "--n", "3", "--history", "2"}), "");
 }
 

@@ -49,17 +49,24 @@ std::vector<int> run(ModelBasedAgent& agent, int episodes, std::vector<int>* act
 
 TEST(ModelBasedAgent, VanirLearnsTheCorridor) {
   // Greedy TEXPLORE has no reason to walk 7 cells before it ever saw a reward; the novelty
-  // and variance rewards take it there, and once the model is learned it exploits.
-  AgentOptions o = texplore({"--rollouts", "200", "--v", "1", "--n", "3"});
-  o.seed = 3;
-  ModelBasedAgent agent(o, corridorTask());
-  EXPECT_FALSE(agent.realTime());
-  const auto lengths = run(agent, 15);
-  // Optimal is 7 steps; after learning the model the agent walks straight to the goal.
-  int optimal = 0;
-  for (std::size_t e = 10; e < lengths.size(); ++e) optimal += lengths[e] == 7;
-  EXPECT_GE(optimal, 4) << "late episode lengths: " << lengths[10] << " " << lengths[11] << " "
-                        << lengths[12] << " " << lengths[13] << " " << lengths[14];
+  // and variance rewards take it there, and once the model is learned it exploits. On the
+  // separate forest (the default) it does so on 5 of seeds 1-8, with or without --defer 300;
+  // on the original's averaged forest (--combo average) on 1 of them (seed 3).
+  std::string lasts;
+  int learned = 0;
+  for (int seed = 1; seed <= 8; ++seed) {
+    AgentOptions o = texplore({"--rollouts", "200", "--v", "1", "--n", "3"});
+    o.seed = seed;
+    ModelBasedAgent agent(o, corridorTask());
+    EXPECT_FALSE(agent.realTime());
+    const auto lengths = run(agent, 15);
+    // Optimal is 7 steps; after learning the model the agent walks straight to the goal.
+    int optimal = 0;
+    for (std::size_t e = 10; e < lengths.size(); ++e) optimal += lengths[e] == 7;
+    learned += optimal >= 4;
+    lasts += " " + std::to_string(lengths.back());
+  }
+  EXPECT_GE(learned, 4) << "last episode lengths, seeds 1-8:" << lasts;
 }
 
 TEST(ModelBasedAgent, SameSeedSameRunInFixedRolloutMode) {
@@ -204,10 +211,16 @@ TEST(ModelBasedAgent, DeferRegionsNeedADeferral) {
                                          "1", "--n", "3", "--defer", "0", "--deferregions", "2"}),
                                corridorTask()),
                std::invalid_argument);
-  // VANIR's own deferral, or one given to another explorer, takes it.
-  EXPECT_NO_THROW(ModelBasedAgent(texplore({"--rollouts", "5", "--explore", "variancenovelty",
-                                            "--v", "1", "--n", "3", "--deferregions", "2"}),
-                                  corridorTask()));
+  // VANIR no longer defers by default (the original's); a deferral given to it or to another
+  // explorer takes it.
+  EXPECT_THROW(ModelBasedAgent(texplore({"--rollouts", "5", "--explore", "variancenovelty", "--v",
+                                         "1", "--n", "3", "--deferregions", "2"}),
+                               corridorTask()),
+               std::invalid_argument);
+  EXPECT_NO_THROW(
+      ModelBasedAgent(texplore({"--rollouts", "5", "--explore", "variancenovelty", "--v", "1",
+                                "--n", "3", "--defer", "300", "--deferregions", "2"}),
+                      corridorTask()));
   EXPECT_NO_THROW(ModelBasedAgent(
       texplore({"--rollouts", "5", "--explore", "random", "--defer", "50", "--deferregions", "2"}),
       corridorTask()));

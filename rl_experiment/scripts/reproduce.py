@@ -370,8 +370,10 @@ def main(argv=None):
           "resumed invocations)." %
           (trials, rollouts, repr(args.lam), args.task_rewards, args.task_planner, args.seed,
            elapsed / 60, args.jobs, total_trial_seconds / 3600), "",
-          "TEXPLORE-VANIR puts off one-way steps while exploring (the suite's default, "
-          "--defer 300; the original's behaviour is --defer 0).", "",
+          "The TEXPLORE agents plan on the separate forest (the suite's default, --combo "
+          "separate: one full tree plans, the forest gives the variance; the task phase's value "
+          "iteration plans on the forest's average; the original's default is --combo average) "
+          "and do not put off one-way steps (--defer 0, the original's).", "",
           "For reference, the paper's optimal policy earns %.1f over the 3000 task steps." %
           PAPER_OPTIMAL_TASK_REWARD, ""] + tables
     tmp = os.path.join(out, ".results.md.tmp")

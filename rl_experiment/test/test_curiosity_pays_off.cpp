@@ -1,11 +1,10 @@
 // Fig. 4 at a small scale, in CI time: at the paper's measuring point (step 1000 of
 // exploration, 100 rollouts, lambda 1, 5000 samples), TEXPLORE-VANIR's model (the suite's
-// default, which puts off one-way steps) is more accurate than random exploration's and than
-// the original VANIR's (--defer 0), on the 20 trials of seed 505 (6 trials do not separate
-// them: 0.572, 0.626 and 0.606). The full comparison (70 trials each, p < 0.001 against random)
-// is in docs/science/lightworld-curiosity.md §4.1; these 20 trials measured 0.546 (default),
-// 0.599 (--defer 0) and 0.622 (random), Welch p = 0.009 against random, and 17, 17 and 8 of
-// them left the first room.
+// default: the separate forest, no deferral) is more accurate than random exploration's on the
+// same forest and than the original VANIR's (--combo average), on the 20 trials of seed 505.
+// These 20 trials measured 0.442 (default), 0.531 (random) and 0.599 (--combo average), and 14,
+// 8 and 17 of them left the first room (docs/science/lightworld-curiosity.md §11-§13; the full
+// comparison, 90 trials against every explorer of the paper, is §12).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -63,18 +62,19 @@ TrialsResult runTrials(const std::vector<std::string>& explorer) {
 
 TEST(CuriosityPaysOff, VanirsModelBeatsRandomAndTheOriginalAtStep1000) {
   const TrialsResult vanir = runTrials({"--v", "1", "--n", "3"});
-  const TrialsResult original = runTrials({"--v", "1", "--n", "3", "--defer", "0"});
+  const TrialsResult original = runTrials({"--v", "1", "--n", "3", "--combo", "average"});
   const TrialsResult rnd = runTrials({"--explore", "random"});
-  std::printf("model distance at step 1000, 20 trials: VANIR %.3f, --defer 0 %.3f, random %.3f\n",
-              vanir.distance, original.distance, rnd.distance);
-  std::printf("trials that left the first room: VANIR %d, --defer 0 %d, random %d\n",
+  std::printf(
+      "model distance at step 1000, 20 trials: VANIR %.3f, --combo average %.3f, random %.3f\n",
+      vanir.distance, original.distance, rnd.distance);
+  std::printf("trials that left the first room: VANIR %d, --combo average %d, random %d\n",
               vanir.leftTheFirstRoom, original.leftTheFirstRoom, rnd.leftTheFirstRoom);
-  // The measured gaps are 0.076 and 0.053 (standard errors about 0.02 and 0.025); the empty
-  // "nothing changes" model scores 0.508.
+  // The measured gaps are 0.089 and 0.157 (standard errors about 0.03); the empty "nothing
+  // changes" model scores 0.508.
   EXPECT_LT(vanir.distance, rnd.distance - 0.04);
-  EXPECT_LT(vanir.distance, original.distance - 0.03);
-  EXPECT_LT(vanir.distance, 0.57);
-  // Putting off one-way steps does not keep it in the first room (measured 17, 17 and 8 of 20).
-  EXPECT_GE(vanir.leftTheFirstRoom, 14);
+  EXPECT_LT(vanir.distance, original.distance - 0.08);
+  EXPECT_LT(vanir.distance, 0.50);
+  // Curiosity takes it out of the first room more often than random actions (14 against 8).
+  EXPECT_GE(vanir.leftTheFirstRoom, 11);
   EXPECT_GT(vanir.leftTheFirstRoom, rnd.leftTheFirstRoom);
 }

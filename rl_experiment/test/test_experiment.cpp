@@ -203,7 +203,9 @@ TEST(Experiment, CheckBuildsTheAgentForTheTask) {
       shell(check + "--rollouts 5 --explore random --deferregions 2 --check");
   EXPECT_EQ(idle, 2);
   EXPECT_NE(idleText.find("--deferregions needs a deferral"), std::string::npos) << idleText;
-  EXPECT_EQ(shell(check + "--rollouts 5 --v 1 --n 3 --deferregions 2 --check").first, 0);
+  EXPECT_EQ(shell(check + "--rollouts 5 --v 1 --n 3 --deferregions 2 --check").first, 2);
+  EXPECT_EQ(shell(check + "--rollouts 5 --v 1 --n 3 --defer 300 --deferregions 2 --check").first,
+            0);
 }
 
 TEST(Experiment, AgentDefaultsToTexploreAsTheAgentNodes) {

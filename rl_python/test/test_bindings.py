@@ -247,8 +247,9 @@ class OptionErrors(unittest.TestCase):
                               rl.make_agent, "texplore", env, alpha=0.5)
         self.assertValueError("option --gamma: invalid value '2' (must be in [0, 1])",
                               rl.make_agent, "qlearner", env, gamma=2)
-        self.assertValueError("option --combo average needs --nmodels > 1 (one tree has nothing "
-                              "to combine)", rl.make_agent, "texplore", env, nmodels=1)
+        self.assertValueError("option --combo separate needs --nmodels > 1 (one tree has "
+                              "nothing to combine)", rl.make_agent, "texplore", env, nmodels=1,
+                              combo="separate")
         self.assertValueError("option --tau applies to --explore boltzmann, not to 'greedy'",
                               rl.make_agent, "texplore", env, tau=0.5)
         with self.assertRaisesRegex(ValueError, r"^make_agent: unknown option 'bogus'; valid "
@@ -264,7 +265,8 @@ class OptionErrors(unittest.TestCase):
         self.assertEqual((vanir.name, vanir.seed), ("texplore", 4))
         o = vanir.options
         self.assertEqual((o["explore"], o["nmodels"], o["combo"], o["lambda"], o["nstates"]),
-                         ("variancenovelty", "5", "average", "1", "0"))
+                         ("variancenovelty", "5", "separate", "1", "0"))
+        self.assertEqual(rl.make_agent("texplore", env, nmodels=1).options["combo"], "best")
         self.assertEqual(rl.make_agent("texplore", env, rollouts=10).options["explore"], "greedy")
         self.assertEqual(rl.make_agent("rmax", env).options["model"], "tabular")
         self.assertEqual(rl.make_agent("qlearner", env, nstates=[2] * 17).options["nstates"],

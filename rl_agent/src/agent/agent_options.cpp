@@ -34,12 +34,13 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
                    {"weighted", "weighted"},
                    {"best", "best"},
                    {"separate", "separate"}},
-                  "how a forest combines its trees");
+                  "how a forest combines its trees (texplore: separate, one full tree plans and "
+                  "the forest gives the variance; the original's texplore: average)");
   p.choice("taskcombo", &o->taskcombo,
            {"same", "average", "weighted", "best", "separate", "bagged"},
            "--taskplanner vi: how the forests combine their trees for planning the task phase "
-           "(same: --combo; bagged: the average of the trees other than --combo separate's "
-           "planning tree)");
+           "(same: --combo, but average after texplore's --combo separate; bagged: the average of "
+           "the trees other than --combo separate's planning tree)");
   p.aliasedChoice("planner", &o->planner, plannerRegistry().spellings(), "planner");
   // Upper bounds keep a typo from exhausting memory or planning for hours in one step.
   p.value("nmodels", &o->nmodels, "trees per forest", inRange(1, 1000));
@@ -71,8 +72,7 @@ void addAgentOptions(rl_common::OptionParser& p, AgentOptions* o) {
           inRange(0.0f, 1.0f));
   p.value("defer", &o->defer,
           "while exploring, put off one-way steps (learned from the agent's own: features no "
-          "action gave back) for this many steps after each one (default: 300 for "
-          "--explore variancenovelty with --v or --n above 0, else 0; 0: never, as the original)",
+          "action gave back) for this many steps after each one (0: never, as the original)",
           atLeast(0L));
   p.value("deferregions", &o->deferregions,
           "with --defer, put off one-way steps only in the first this many regions (a region "
@@ -176,9 +176,13 @@ void applyAgentDefaults(const rl_common::OptionParser& p, AgentOptions* o) {
     setIfUnset("m", &o->m, 5);
   } else if (o->agent == "texplore") {
     setIfUnset("model", &o->model, std::string("tree"));
-    setIfUnset("combo", &o->combo, std::string("average"));
     setIfUnset("planner", &o->planner, std::string("parallel-uct"));
     setIfUnset("nmodels", &o->nmodels, 5);
+    // The separate forest (the original's SEPARATE, SepPlanExplore): plan on one tree that
+    // learns every experience, take the variance from the whole forest. With it TEXPLORE-VANIR's
+    // model beats every explorer's at step 1000, each explorer on the same forest
+    // (docs/science/lightworld-curiosity.md §11-§13); --combo average is the original's default.
+    setIfUnset("combo", &o->combo, std::string(o->nmodels > 1 ? "separate" : "best"));
     setIfUnset("reltrans", &o->reltrans, true);
     setIfUnset("m", &o->m, 0);
     // TEXPLORE-VANIR when v or n is non-zero, plain greedy TEXPLORE otherwise (as the original).
@@ -187,6 +191,12 @@ void applyAgentDefaults(const rl_common::OptionParser& p, AgentOptions* o) {
   }
   if ((o->explore == "competence" || o->explore == "prederror") && !p.given("v") && !p.given("b")) {
     o->v = 1.0f;  // the region bonus's weight
+  }
+  // Value iteration plans the task on the whole forest's average, whose spread keeps rare
+  // outcomes such as a door opening above --taskminprob (the note's §11-§12).
+  if (o->combo == "separate" && o->taskplanner == "vi" && !p.given("taskcombo") &&
+      modelRegistry().takesOption(o->model, "taskcombo")) {
+    o->taskcombo = "average";
   }
 }
 

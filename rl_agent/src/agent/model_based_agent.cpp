@@ -53,23 +53,20 @@ ModelBasedAgent::ModelBasedAgent(const Config& config,
       rng_(rl_common::Random::deriveSeed(config.seed, "actions")),
       selector_(ActionSelector::Mode::Greedy, std::max(1, task.numActions), 0.0, 1.0) {
   checkTask(config, task);
-  // The explorer, built once: its action choice, its deferral and the model's bonuses.
+  // The explorer, built once: its action choice and the model's bonuses.
   const std::unique_ptr<Explorer> explorer = makeExplorer(config);
   checkModelExplorer(config.model, config.explore);
   checkModelGrid(config.model, config.planner,
                  plannerRegistry().hasFact(config.planner, kSearchPlannerFact),
                  !config.planning.dp.statesPerDim.empty());
   selector_ = ActionSelector::forExplorer(*explorer, task.numActions, config.epsilon);
-  // The explorer's own deferral, unless given; an action history never comes back, so with
-  // --history every step would look one-way.
-  const long defer = config.defer >= 0 ? config.defer : explorer->deferSteps;
-  if (defer > 0 && config.history == 0) {
-    deferral_ = std::make_unique<StepDeferral>(defer, config.deferRegions);
+  // An action history never comes back, so with --history every step would look one-way.
+  if (config.defer > 0 && config.history == 0) {
+    deferral_ = std::make_unique<StepDeferral>(config.defer, config.deferRegions);
   } else if (config.deferRegions > 0) {
     throw std::invalid_argument(
         "ModelBasedAgent::ModelBasedAgent(): --deferregions needs a deferral: --defer above 0 "
-        "(its default defers only for --explore variancenovelty with --v or --n above 0) and "
-        "no --history");
+        "and no --history");
   }
   if (!config.statesPerDim.empty()) {
     grid_ = StateGrid(config.statesPerDim, task.minFeatures, task.maxFeatures);

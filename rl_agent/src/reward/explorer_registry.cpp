@@ -41,11 +41,9 @@ ExplorerRegistry build() {
             if (s.v != 0.0f) e->rewards.push_back(std::make_shared<VarianceReward>(s.v));
             if (s.n != 0.0f)
               e->rewards.push_back(std::make_shared<NoveltyReward>(s.n, s.stateNovelty));
-            if (!e->rewards.empty()) e->deferSteps = kVanirDeferSteps;
             return e;
           },
-          "TEXPLORE-VANIR: v * variance + n * novelty, one-way steps put off (--defer)", {},
-          {"v", "n", "novelty"});
+          "TEXPLORE-VANIR: v * variance + n * novelty", {}, {"v", "n", "novelty"});
   reg.add(
       "unknown",
       [](const ExplorerSettings& s) {

@@ -52,9 +52,9 @@ struct AgentOptions {
   bool bonusonce = false;
   float minprob = 0.0f;  ///< UctPlanner::Config::minOutcomeProbability
   /// While exploring, put off one-way steps for this many steps after each one (StepDeferral);
-  /// 0: never, as the original; -1: the explorer's own (Explorer::deferSteps: 300 for
-  /// TEXPLORE-VANIR with a bonus, 0 for the others).
-  long defer = -1;
+  /// 0: never, as the original (and the default since the separate forest: with it VANIR
+  /// explores as well without the deferral, docs/science/lightworld-curiosity.md §12).
+  long defer = 0;
   /// With the deferral, defer only in the first this many regions (StepDeferral's maxRegions);
   /// 0: in every region.
   long deferregions = 0;
@@ -111,10 +111,12 @@ void addAgentOptions(rl_common::OptionParser& parser, AgentOptions* options);
 
 /// Gives options the user did not set the defaults of the chosen agent (the original's
 /// overrides, ORIGINAL.md §3.1): rmax plans with value iteration on a tabular model and
-/// explores unknown state-actions; texplore uses 5-tree forests averaged, relative
-/// transitions, the real-time UCT planner, and variance-novelty exploration when --v or --n is
-/// given (greedy otherwise). The competence and prederror explorers weigh their bonus with
-/// --v, 1 unless given.
+/// explores unknown state-actions; texplore uses 5-tree forests, relative transitions, the
+/// real-time UCT planner, and variance-novelty exploration when --v or --n is given (greedy
+/// otherwise). Unlike the original (--combo average), texplore's forests are separate (one full
+/// tree plans, the forest gives the variance; best with --nmodels 1), and with --taskplanner vi
+/// the task is planned on the forest's average (--taskcombo average). The competence and
+/// prederror explorers weigh their bonus with --v, 1 unless given.
 void applyAgentDefaults(const rl_common::OptionParser& parser, AgentOptions* options);
 
 /// The original's option rules without its bugs: options apply only to the agents that use

@@ -37,7 +37,7 @@ struct ModelBasedConfig {
   double epsilon = 0.0;           ///< ε of ε-greedy action choice
   std::vector<int> statesPerDim;  ///< --nstates binning of the model's inputs; empty: none
   int history = 0;                ///< actions of history in the model's input
-  long defer = -1;                ///< --defer; < 0: the explorer's
+  long defer = 0;                 ///< --defer; 0: never
   long deferRegions = 0;          ///< --deferregions
   Ucb exploreUcb;                 ///< UCB bound while exploring (--ucb, --ucbc)
   /// UCB bound of the task phase (--taskucb, --taskucbc); unset: the exploring one.

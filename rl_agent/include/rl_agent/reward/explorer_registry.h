@@ -5,8 +5,7 @@
  *
  *   greedy           none: external reward only
  *   epsilongreedy    none, and the agent acts at random with probability epsilon
- *   variancenovelty  TEXPLORE-VANIR: v * D(s,a) + n * delta(s,a); with a bonus, one-way steps
- *                    are put off for kVanirDeferSteps steps (--defer; 0 is the original)
+ *   variancenovelty  TEXPLORE-VANIR: v * D(s,a) + n * delta(s,a)
  *   unknown          R-MAX-style: reward rmax and termination for (s,a) seen fewer than m
  *                    times (Brafman & Tennenholtz 2002)
  *   unvisitedstates  + n for states never visited
@@ -53,14 +52,7 @@ struct Explorer {
   bool randomActions = false;  ///< act uniformly at random (the model still learns)
   bool boltzmann = false;      ///< softmax on the planner's Q-values with temperature tau
   float tau = defaults::kBoltzmannTau;
-  /// The agent's --defer when not given: steps a region is explored before a one-way step
-  /// (StepDeferral); 0: never, as the original.
-  long deferSteps = 0;
 };
-
-/// --defer of TEXPLORE-VANIR with a bonus: a random walk that leaves LightWorld's key on the
-/// floor for 300 steps learns most (docs/science/lightworld-curiosity.md §2.1).
-constexpr long kVanirDeferSteps = 300;
 
 /// The fact of the explorers that add no bonus and only change how actions are chosen
 /// (greedy, epsilongreedy, random, boltzmann): every model serves them.
