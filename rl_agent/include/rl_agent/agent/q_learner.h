@@ -3,17 +3,17 @@
  *
  * Watkins & Dayan, "Q-learning", Machine Learning 8:279-292, 1992. After each step,
  *   Q(s,a) <- Q(s,a) + alpha * (r + gamma * max_a' Q(s',a') - Q(s,a)),
- * with the bootstrap term dropped when s' is terminal. States are keyed by their exact feature
- * vector; unseen state-actions start at `initialValue`. Greedy ties are broken at random
- * among actions within 1e-4 of the best value, as in the original package.
+ * with the bootstrap term dropped when s' is terminal. The values live in a QTable (shared with
+ * Sarsa and Dyna): states keyed by their exact feature vector, unseen state-actions at
+ * `initialValue`, greedy ties within 1e-4 of the best broken at random, as in the original.
  */
 #pragma once
 
 #include <cstdint>
-#include <map>
 #include <string>
 #include <vector>
 
+#include "rl_agent/agent/q_table.h"
 #include "rl_agent/learning_defaults.h"
 #include "rl_common/agent.h"
 #include "rl_common/random.h"
@@ -47,13 +47,11 @@ class QLearner : public rl_common::Agent {
   int greedyAction(const rl_common::State& s);
 
  private:
-  std::vector<float>& row(const rl_common::State& s);
-  int chooseAction(const rl_common::State& s);
   void update(const rl_common::State& s, int a, float r, const rl_common::State* next);
 
   Config config_;
   rl_common::Random rng_;
-  std::map<rl_common::State, std::vector<float>> q_;
+  QTable q_;
   rl_common::State lastState_;
   int lastAction_ = -1;
 };
