@@ -108,6 +108,21 @@ TEST(Experiment, SameSeedSameLogsAndParallelJobsGiveTheSameTrials) {
   EXPECT_NE(run.find("option.alpha,"), std::string::npos);
 }
 
+TEST(Experiment, AFixedRolloutRunResumesWithOtherJobs) {
+  // --jobs sets the real-time planner's --searchthreads; a run with --rollouts does not read
+  // it, so its recorded configuration does not change with --jobs.
+  const std::string dir = tempDir();
+  const std::vector<std::string> vanir = {
+      "--agent", "texplore", "--env",      "lightworld", "--v",     "1",
+      "--n",     "3",        "--rollouts", "5",          "--steps", "20",
+      "--seed",  "3",        "--progress", "off",        "--out",   dir};
+  auto first = make(with(vanir, {"--trials", "1", "--jobs", "2"}));
+  ASSERT_EQ(runAll(first), 0);
+  auto resume = make(with(vanir, {"--trials", "2", "--jobs", "1", "--resume"}));
+  resume.prepare();
+  EXPECT_EQ(resume.pendingTrials(), std::vector<int>{1});
+}
+
 TEST(Experiment, NeverOverwritesWithoutForceAndResumesUnfinishedTrials) {
   const std::string dir = tempDir();
   auto first = make(with(kQuick, {"--trials", "2", "--out", dir}));
@@ -122,7 +137,12 @@ TEST(Experiment, NeverOverwritesWithoutForceAndResumesUnfinishedTrials) {
   std::remove((dir + "/trial-001.csv").c_str());
   rl_experiment::writeFileAtomically(dir + "/steps-001.csv", "trial,step\n1,0\n");
   auto other = make(with(kQuick, {"--trials", "2", "--out", dir, "--resume", "--alpha", "0.5"}));
-  EXPECT_THROW(other.prepare(), std::runtime_error);  // different configuration
+  try {  // a different configuration, named
+    other.prepare();
+    ADD_FAILURE() << "resumed with another --alpha";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("(alpha: 0.3 -> 0.5)"), std::string::npos) << e.what();
+  }
   auto resume = make(with(kQuick, {"--trials", "2", "--out", dir, "--resume"}));
   resume.prepare();
   EXPECT_EQ(resume.pendingTrials(), std::vector<int>{1});

@@ -83,9 +83,11 @@ void Experiment::prepare() {
           if (!ignoredForResume(name)) recorded += name + "=" + row[1] + "\n";
         }
       }
-      if (recorded != fingerprint()) {
+      const std::string now = fingerprint();
+      if (recorded != now) {
         throw std::runtime_error("Experiment::prepare(): cannot resume " + config_.out +
-                                 ": its run.csv records a different configuration");
+                                 ": its run.csv records a different configuration (" +
+                                 configurationDifference(recorded, now) + ")");
       }
     } else if (config_.force) {
       for (const auto& f : results) std::remove(path(f).c_str());

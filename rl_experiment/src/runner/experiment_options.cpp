@@ -4,6 +4,7 @@
 #include <thread>
 
 #include "rl_agent/agent/agent_registry.h"
+#include "rl_agent/planner/planner_registry.h"
 #include "rl_env/env/environment_registry.h"
 #include "rl_experiment/runner/experiment.h"
 #include "rl_experiment/suite/suite_environments.h"
@@ -82,8 +83,14 @@ void finishExperimentConfig(const rl_common::OptionParser& p, ExperimentConfig* 
   rl_agent::applyAgentDefaults(p, &c->agent);
   rl_agent::checkAgentOptions(p, c->agent);
   // Parallel trials share the cores: each real-time agent plans with its share of them unless
-  // --searchthreads says otherwise (the run records the value used).
-  if (c->jobs > 1 && !p.given("searchthreads")) {
+  // --searchthreads says otherwise (the run records the value used). Only real-time planning
+  // reads it, so a fixed-rollout run's configuration does not depend on --jobs (and resumes
+  // with another --jobs).
+  const bool realTime =
+      c->agent.rollouts == 0 &&
+      rl_agent::agentRegistry().hasFact(c->agent.agent, rl_agent::kModelBasedFact) &&
+      rl_agent::plannerRegistry().hasFact(c->agent.planner, rl_agent::kRealTimePlannerFact);
+  if (c->jobs > 1 && realTime && !p.given("searchthreads")) {
     c->agent.searchthreads =
         std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / c->jobs);
   }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
+#include <sstream>
 #include <stdexcept>
 #include <system_error>
 
@@ -76,6 +78,35 @@ void collectTrialSummaries(const std::string& folder) {
     body += csvLine(values);
   }
   if (!header.empty()) writeFileAtomically(folder + "/trials.csv", header + body);
+}
+
+std::string configurationDifference(const std::string& recorded, const std::string& now) {
+  const auto parse = [](const std::string& text) {
+    std::map<std::string, std::string> values;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+      const std::size_t eq = line.find('=');
+      if (eq != std::string::npos) values[line.substr(0, eq)] = line.substr(eq + 1);
+    }
+    return values;
+  };
+  const auto a = parse(recorded), b = parse(now);
+  std::string out;
+  const auto add = [&out](const std::string& name, const std::string& from, const std::string& to) {
+    out += (out.empty() ? "" : ", ") + name + ": " + from + " -> " + to;
+  };
+  for (const auto& [name, value] : a) {
+    const auto it = b.find(name);
+    if (it == b.end()) {
+      add(name, value, "(not an option now)");
+    } else if (it->second != value) {
+      add(name, value, it->second);
+    }
+  }
+  for (const auto& [name, value] : b) {
+    if (a.count(name) == 0) add(name, "(not recorded)", value);
+  }
+  return out;
 }
 
 }  // namespace rl_experiment

@@ -1,6 +1,7 @@
 /**
  * The run folder on disk (std::filesystem): which files the runner writes there, making it,
- * listing it, and trials.csv collected from the finished trials' summaries.
+ * listing it, trials.csv collected from the finished trials' summaries, and what keeps a run
+ * from resuming.
  */
 #pragma once
 
@@ -25,6 +26,11 @@ void makeRunFolder(const std::string& folder);
 /// The summary row of a trial-NNN.csv file's text: (column, value) pairs (empty if the file
 /// has no row).
 std::vector<std::pair<std::string, std::string>> parseSummaryRow(const std::string& text);
+
+/// The options whose values differ between a run's recorded configuration and the one given
+/// now, both as name=value lines, as "name: recorded -> now", comma-separated (what a refused
+/// --resume names).
+std::string configurationDifference(const std::string& recorded, const std::string& now);
 
 /// Rewrites FOLDER/trials.csv (atomically) from every trial-NNN.csv in `folder`.
 void collectTrialSummaries(const std::string& folder);
