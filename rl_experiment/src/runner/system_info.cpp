@@ -1,13 +1,11 @@
 #include "rl_experiment/runner/system_info.h"
 
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <string>
 
-#ifndef RL_EXPERIMENT_SOURCE_DIR
-#define RL_EXPERIMENT_SOURCE_DIR ""
-#endif
+#include "rl_experiment/build_version.h"  // generated at build time (write_build_version.cmake)
+
 #ifndef RL_EXPERIMENT_VERSION
 #define RL_EXPERIMENT_VERSION "unknown"
 #endif
@@ -15,18 +13,8 @@
 namespace rl_experiment {
 
 std::string suiteVersion() {
-  std::string dir = RL_EXPERIMENT_SOURCE_DIR;
-  if (!dir.empty()) {
-    const std::string cmd = "git -C '" + dir + "' describe --always --dirty --tags 2>/dev/null";
-    if (std::FILE* pipe = ::popen(cmd.c_str(), "r")) {
-      char buf[256] = {0};
-      std::string out;
-      while (std::fgets(buf, sizeof(buf), pipe) != nullptr) out += buf;
-      const int status = ::pclose(pipe);
-      while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
-      if (status == 0 && !out.empty()) return "git " + out;
-    }
-  }
+  const std::string built = RL_EXPERIMENT_BUILD_VERSION;
+  if (!built.empty()) return "git " + built;
   return std::string("package ") + RL_EXPERIMENT_VERSION;
 }
 

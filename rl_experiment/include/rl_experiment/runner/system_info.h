@@ -8,8 +8,9 @@
 
 namespace rl_experiment {
 
-/// The suite's version: `git describe --always --dirty` of the source tree if available, else
-/// the package version.
+/// The suite's version: `git describe --always --dirty --tags` of the source tree when this
+/// binary was built (so a run records what it ran, even after the tree moved on), else the
+/// package version.
 std::string suiteVersion();
 
 /// Peak resident memory of this process in kB (VmHWM), and a reset of it (best effort).
