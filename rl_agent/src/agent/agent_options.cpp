@@ -130,6 +130,11 @@ int searchThreads(const AgentOptions& o) {
   return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
+bool plansInRealTime(const AgentOptions& o) {
+  return o.rollouts == 0 && agentRegistry().hasFact(o.agent, kModelBasedFact) &&
+         plannerRegistry().hasFact(o.planner, kRealTimePlannerFact);
+}
+
 bool binsStates(const AgentOptions& o) {
   return std::any_of(o.nstates.begin(), o.nstates.end(), [](int n) { return n > 0; });
 }

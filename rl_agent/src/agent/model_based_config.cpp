@@ -57,9 +57,7 @@ ModelBasedConfig modelBasedConfig(const AgentOptions& o,
   PlannerSettings& p = c.planning;
   p.seed = rl_common::Random::deriveSeed(o.seed, "planner");
   p.rollouts = o.rollouts;
-  p.searchThreads = plannerRegistry().hasFact(o.planner, kRealTimePlannerFact) && o.rollouts == 0
-                        ? searchThreads(o)
-                        : 1;
+  p.searchThreads = plansInRealTime(o) ? searchThreads(o) : 1;
   UctPlanner::Config& s = p.search;
   s.numActions = t.numActions;
   s.gamma = o.gamma;

@@ -4,7 +4,6 @@
 #include <thread>
 
 #include "rl_agent/agent/agent_registry.h"
-#include "rl_agent/planner/planner_registry.h"
 #include "rl_env/env/environment_registry.h"
 #include "rl_experiment/runner/experiment.h"
 #include "rl_experiment/suite/suite_environments.h"
@@ -86,11 +85,7 @@ void finishExperimentConfig(const rl_common::OptionParser& p, ExperimentConfig* 
   // --searchthreads says otherwise (the run records the value used). Only real-time planning
   // reads it, so a fixed-rollout run's configuration does not depend on --jobs (and resumes
   // with another --jobs).
-  const bool realTime =
-      c->agent.rollouts == 0 &&
-      rl_agent::agentRegistry().hasFact(c->agent.agent, rl_agent::kModelBasedFact) &&
-      rl_agent::plannerRegistry().hasFact(c->agent.planner, rl_agent::kRealTimePlannerFact);
-  if (c->jobs > 1 && realTime && !p.given("searchthreads")) {
+  if (c->jobs > 1 && rl_agent::plansInRealTime(c->agent) && !p.given("searchthreads")) {
     c->agent.searchthreads =
         std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / c->jobs);
   }

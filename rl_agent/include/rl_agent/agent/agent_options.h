@@ -96,6 +96,10 @@ struct AgentOptions {
 /// True if --nstates bins some feature.
 bool binsStates(const AgentOptions& options);
 
+/// True if the options plan in real time: a model-based agent whose planner is real-time UCT,
+/// without --rollouts (the only case that reads --searchthreads).
+bool plansInRealTime(const AgentOptions& options);
+
 /// The most planning threads --searchthreads takes.
 constexpr int kMaxSearchThreads = 64;
 /// --searchthreads resolved: the option, or one per core (at least 1) for 0.
