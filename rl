@@ -119,8 +119,8 @@ run_tsan_tests() {
   local results=$1 tsan=$BUILD_ROOT/tsan
   mkdir -p "$results" "$tsan/devel/lib/python3/dist-packages"
   log "building the threaded tests with ThreadSanitizer (${TSAN_TESTS[*]})"
-  # rl_agent and the packages it depends on (its agent node links rl_env).
-  local packages="rl_common;rl_msgs;naoqi_bridge_msgs;nao_interface;rl_env;rl_agent"
+  # rl_agent and the packages it depends on (rl_agent needs no environment package).
+  local packages="rl_common;rl_msgs;rl_agent"
   if ! grep -qx "CATKIN_WHITELIST_PACKAGES:STRING=$packages" "$tsan/build/CMakeCache.txt" \
     2>/dev/null; then
     cmake -S "$ROOT" -B "$tsan/build" -DCATKIN_DEVEL_PREFIX="$tsan/devel" \

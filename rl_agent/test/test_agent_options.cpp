@@ -352,3 +352,27 @@ TEST(AgentOptions, DeferRegionsIsEveryRegionUnlessGiven) {
   EXPECT_NE(errorOf({"--agent", "qlearner", "--deferregions", "2"}).find("--deferregions"),
             std::string::npos);
 }
+
+TEST(AgentOptions, PresetsComeFromTheRegistryEntries) {
+  // rmax's needed values: applied when not given, an error when given otherwise.
+  EXPECT_NE(errorOf({"--agent", "rmax", "--explore", "variancenovelty"})
+                .find("--agent rmax needs --explore unknown (got variancenovelty)"),
+            std::string::npos);
+  EXPECT_NE(errorOf({"--agent", "rmax", "--model", "tree"})
+                .find("--agent rmax needs --model tabular (got tree)"),
+            std::string::npos);
+  EXPECT_EQ(errorOf({"--agent", "rmax", "--model", "tabular", "--explore", "unknown"}), "");
+  // A preset's default never overrides the user's choice, also through the other spelling of
+  // one field (--abstrans sets what --reltrans does).
+  EXPECT_FALSE(parse({"--agent", "texplore", "--abstrans"}).reltrans);
+  EXPECT_TRUE(parse({"--agent", "rmax", "--reltrans"}).reltrans);
+  EXPECT_EQ(parse({"--agent", "rmax", "--m", "2"}).m, 2);
+  // The model-free agents take the explorers of the registry's model-free-selection fact.
+  EXPECT_NE(errorOf({"--agent", "sarsa", "--explore", "boltzmann"})
+                .find("must be epsilongreedy or greedy"),
+            std::string::npos);
+  EXPECT_EQ(errorOf({"--agent", "sarsa", "--explore", "epsilongreedy"}), "");
+  // --explore given as variancenovelty stays, even without weights.
+  EXPECT_EQ(parse({"--agent", "texplore", "--explore", "variancenovelty"}).explore,
+            "variancenovelty");
+}

@@ -92,3 +92,16 @@ TEST(Registry, EntriesCarryFactsAndTheOptionsTheyRead) {
   EXPECT_EQ(reg.specificOptions(), (std::vector<std::string>{"radius", "side"}));
   EXPECT_THROW(reg.takesOption("hexagon", "side"), std::invalid_argument);
 }
+
+TEST(Registry, EntriesCarryOptionDefaultsAndNeeds) {
+  ShapeRegistry reg = makeRegistry();
+  EXPECT_TRUE(reg.defaults("square").empty());
+  EXPECT_TRUE(reg.needs("square").empty());
+  reg.setOptionValues("round", {{"colour", "red"}}, {{"radius", "1"}});
+  const rl_common::OptionValues red{{"colour", "red"}};
+  EXPECT_EQ(reg.defaults("circle"), red);  // set through the alias, read by the name
+  EXPECT_EQ(reg.needs("round"), (rl_common::OptionValues{{"radius", "1"}}));
+  EXPECT_TRUE(reg.defaults("square").empty());
+  EXPECT_THROW(reg.setOptionValues("hexagon", {}), std::invalid_argument);
+  EXPECT_THROW(reg.defaults("hexagon"), std::invalid_argument);
+}

@@ -165,38 +165,69 @@ void requireAgent(const rl_common::OptionParser& p, const AgentOptions& o, const
   }
 }
 
+/// True if the user gave `option` or another option that sets the same field (--reltrans and
+/// --abstrans are one choice).
+bool givenField(const rl_common::OptionParser& p, const std::string& option) {
+  static const std::vector<std::vector<std::string>> oneField{{"reltrans", "abstrans"}};
+  for (const auto& group : oneField) {
+    if (std::find(group.begin(), group.end(), option) == group.end()) continue;
+    return std::any_of(group.begin(), group.end(),
+                       [&p](const std::string& o) { return p.given(o); });
+  }
+  return p.given(option);
+}
+
+/// Applies a registry entry's option values that the user did not give, parsed and validated
+/// as on the command line.
+void applyUnset(const rl_common::OptionParser& p, const rl_common::OptionValues& values,
+                AgentOptions* o) {
+  rl_common::OptionParser fields("agent", "");
+  addAgentOptions(fields, o);
+  for (const auto& [option, value] : values) {
+    if (!givenField(p, option)) fields.set(option, value);
+  }
+}
+
+/// The value of `option` in `o` as the option parser shows it.
+std::string shownValue(const AgentOptions& o, const std::string& option) {
+  AgentOptions copy = o;
+  rl_common::OptionParser fields("agent", "");
+  addAgentOptions(fields, &copy);
+  for (const auto& [name, value] : fields.currentValues()) {
+    if (name == option) return value;
+  }
+  throw std::invalid_argument("shownValue(): no option --" + option);
+}
+
+/// Same, after applying `value` to it.
+std::string shownValueOf(const AgentOptions& o, const std::string& option,
+                         const std::string& value) {
+  AgentOptions copy = o;
+  rl_common::OptionParser fields("agent", "");
+  addAgentOptions(fields, &copy);
+  fields.set(option, value);
+  return shownValue(copy, option);
+}
+
 }  // namespace
 
 void applyAgentDefaults(const rl_common::OptionParser& p, AgentOptions* o) {
-  auto setIfUnset = [&p](const char* option, auto* field, auto value) {
-    if (!p.given(option)) *field = value;
-  };
-  if (o->agent == "rmax") {
-    setIfUnset("model", &o->model, std::string("tabular"));
-    setIfUnset("explore", &o->explore, std::string("unknown"));
-    setIfUnset("combo", &o->combo, std::string("best"));
-    setIfUnset("planner", &o->planner, std::string("vi"));
-    setIfUnset("nmodels", &o->nmodels, 1);
-    setIfUnset("reltrans", &o->reltrans, false);
-    setIfUnset("m", &o->m, 5);
-  } else if (o->agent == "texplore") {
-    setIfUnset("model", &o->model, std::string("tree"));
-    setIfUnset("planner", &o->planner, std::string("parallel-uct"));
-    setIfUnset("nmodels", &o->nmodels, 5);
-    // The separate forest (the original's SEPARATE, SepPlanExplore): plan on one tree that
-    // learns every experience, take the variance from the whole forest. With it TEXPLORE-VANIR's
-    // model beats every explorer's at step 1000, each explorer on the same forest
-    // (docs/science/lightworld-curiosity.md §11-§13); --combo average is the original's default.
-    setIfUnset("combo", &o->combo, std::string(o->nmodels > 1 ? "separate" : "best"));
-    setIfUnset("reltrans", &o->reltrans, true);
-    setIfUnset("m", &o->m, 0);
-    // TEXPLORE-VANIR when v or n is non-zero, plain greedy TEXPLORE otherwise (as the original).
-    setIfUnset("explore", &o->explore,
-               std::string(o->v != 0.0f || o->n != 0.0f ? "variancenovelty" : "greedy"));
+  // The agent's preset (its registry entry): defaults and needed values, where not given.
+  // An unknown agent name is reported where the agent is built.
+  const AgentRegistry& agents = agentRegistry();
+  if (agents.contains(o->agent)) {
+    applyUnset(p, agents.defaults(o->agent), o);
+    applyUnset(p, agents.needs(o->agent), o);
   }
-  if ((o->explore == "competence" || o->explore == "prederror") && !p.given("v") && !p.given("b")) {
-    o->v = 1.0f;  // the region bonus's weight
+  // A forest of one tree has nothing to combine: unless --combo is given it plans as best.
+  if (!p.given("combo") && o->nmodels == 1) o->combo = "best";
+  const ExplorerRegistry& explorers = explorerRegistry();
+  if (!p.given("explore") && explorers.contains(o->explore) &&
+      explorers.hasFact(o->explore, kGreedyWithoutWeightsFact) && o->v == 0.0f && o->n == 0.0f) {
+    o->explore = "greedy";
   }
+  // The explorer's own defaults (the region bonuses' weight --v).
+  if (explorers.contains(o->explore)) applyUnset(p, explorers.defaults(o->explore), o);
   // Value iteration plans the task on the whole forest's average, whose spread keeps rare
   // outcomes such as a door opening above --taskminprob (the note's §11-§12).
   if (o->combo == "separate" && o->taskplanner == "vi" && !p.given("taskcombo") &&
@@ -248,6 +279,15 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
                              "taskoutcomes",
                              "taskcombo"}) {
     requireAgent(p, o, option, modelBasedList);
+  }
+  // Values the agent's entry needs (rmax: --model tabular, --explore unknown).
+  if (agentRegistry().contains(o.agent)) {
+    for (const auto& [option, value] : agentRegistry().needs(o.agent)) {
+      if (shownValue(o, option) != shownValueOf(o, option, value)) {
+        throw rl_common::OptionError("--agent " + o.agent + " needs --" + option + " " + value +
+                                     " (got " + shownValue(o, option) + ")");
+      }
+    }
   }
   const bool modelBased = isOneOf(o.agent, modelBasedList);
   if (modelBased) {
@@ -302,9 +342,6 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
     } catch (const std::invalid_argument& e) {
       throw rl_common::OptionError(e.what());
     }
-    if (o.agent == "rmax" && o.explore != "unknown") {
-      throw rl_common::OptionError("--agent rmax needs --explore unknown");
-    }
     if (p.given("taskcombo") && !modelRegistry().takesOption(o.model, "taskcombo")) {
       throw rl_common::OptionError("option --taskcombo applies to --model " +
                                    rl_common::joinNames(modelRegistry().namesTaking("taskcombo")) +
@@ -318,12 +355,12 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
       throw rl_common::OptionError("option --combo " + o.combo +
                                    " needs --nmodels > 1 (one tree has nothing to combine)");
     }
-    if (o.agent == "rmax" && o.model != "tabular") {
-      throw rl_common::OptionError("--agent rmax needs --model tabular");
-    }
-  } else if (p.given("explore") && o.explore != "greedy" && o.explore != "epsilongreedy") {
-    throw rl_common::OptionError("option --explore for '" + o.agent +
-                                 "' must be greedy or epsilongreedy");
+  } else if (p.given("explore") &&
+             !explorerRegistry().hasFact(o.explore, kModelFreeSelectionFact)) {
+    throw rl_common::OptionError(
+        "option --explore for '" + o.agent + "' must be " +
+        rl_common::joinNames(explorerRegistry().namesWith(kModelFreeSelectionFact), " or ") +
+        " (it acts epsilon-greedily)");
   }
 }
 

@@ -68,6 +68,23 @@ AgentRegistry buildRegistry() {
           "R-MAX: tabular model, optimistic for state-actions seen fewer than --m times, value "
           "iteration (Brafman & Tennenholtz 2002)",
           {kModelBasedFact});
+  // The presets: what --agent texplore and --agent rmax mean (shared/spec/ORIGINAL.md §3.1).
+  // The separate forest (the original's SEPARATE): plan on one tree that learns every
+  // experience, take the variance from the whole forest; with it TEXPLORE-VANIR's model beats
+  // every explorer's at step 1000, each on the same forest (docs/science/lightworld-curiosity.md
+  // §11-§13). --combo average is the original's default; one tree plans as best. texplore is
+  // TEXPLORE-VANIR with --v or --n, plain greedy TEXPLORE without (kGreedyWithoutWeightsFact).
+  reg.setOptionValues("texplore", {{"model", "tree"},
+                                   {"planner", "parallel-uct"},
+                                   {"nmodels", "5"},
+                                   {"combo", "separate"},
+                                   {"reltrans", "true"},
+                                   {"m", "0"},
+                                   {"explore", "variancenovelty"}});
+  reg.setOptionValues(
+      "rmax",
+      {{"combo", "best"}, {"planner", "vi"}, {"nmodels", "1"}, {"reltrans", "false"}, {"m", "5"}},
+      {{"model", "tabular"}, {"explore", "unknown"}});
   reg.add("savedpolicy",
           [](const AgentOptions& o, const rl_common::EnvironmentDescription& d) {
             return std::make_unique<SavedPolicy>(d.numActions, static_cast<int>(d.numFeatures()),

@@ -27,14 +27,15 @@ ExplorerRegistry::Factory countBonusExplorer() {
 ExplorerRegistry build() {
   ExplorerRegistry reg("explore type");
   reg.add("greedy", [](const ExplorerSettings&) { return std::make_unique<Explorer>(); },
-          "external reward only", {kSelectionOnlyFact});
+          "external reward only", {kSelectionOnlyFact, kModelFreeSelectionFact});
   reg.add("epsilongreedy",
           [](const ExplorerSettings&) {
             auto e = std::make_unique<Explorer>();
             e->epsilonGreedy = true;
             return e;
           },
-          "random action with probability epsilon", {kSelectionOnlyFact}, {"epsilon"});
+          "random action with probability epsilon", {kSelectionOnlyFact, kModelFreeSelectionFact},
+          {"epsilon"});
   reg.add("variancenovelty",
           [](const ExplorerSettings& s) {
             auto e = std::make_unique<Explorer>();
@@ -43,7 +44,8 @@ ExplorerRegistry build() {
               e->rewards.push_back(std::make_shared<NoveltyReward>(s.n, s.stateNovelty));
             return e;
           },
-          "TEXPLORE-VANIR: v * variance + n * novelty", {}, {"v", "n", "novelty"});
+          "TEXPLORE-VANIR: v * variance + n * novelty", {kGreedyWithoutWeightsFact},
+          {"v", "n", "novelty"});
   reg.add(
       "unknown",
       [](const ExplorerSettings& s) {
@@ -89,6 +91,9 @@ ExplorerRegistry build() {
           "R-IAC-style competence progress in random regions (weight v)", {}, {"v"});
   reg.add("prederror", regionExplorer(RegionErrorReward::Kind::PredictionError),
           "prediction error in random regions (weight v)", {}, {"v"});
+  // The region bonuses' weight is 1 unless given (without it they would add nothing).
+  reg.setOptionValues("competence", {{"v", "1"}});
+  reg.setOptionValues("prederror", {{"v", "1"}});
   return reg;
 }
 

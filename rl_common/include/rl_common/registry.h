@@ -10,6 +10,9 @@
  * "true-model") and the names of the component-specific options it reads (an environment's
  * "delay"), so that a list of the components with a property, or the check that an option
  * applies, is read from the registry instead of being written out again wherever it is needed.
+ * It may also carry option values of its own: defaults it gives the options the user did not
+ * set (rmax's --planner vi), and values it needs (rmax's --model tabular), so that a preset is
+ * written once, in the entry of its component.
  */
 #pragma once
 
@@ -35,6 +38,9 @@ inline std::string joinNames(const std::vector<std::string>& names,
   return out;
 }
 
+/// Option values as (option name, value as on the command line) pairs.
+using OptionValues = std::vector<std::pair<std::string, std::string>>;
+
 template <class Product, class... Args>
 class Registry {
  public:
@@ -54,8 +60,23 @@ class Registry {
       throw std::invalid_argument("Registry::add(): " + kind_ + " '" + name +
                                   "' is already registered");
     }
-    entries_.emplace(name, Entry{std::move(factory), std::move(description), std::move(facts),
-                                 std::move(options)});
+    entries_.emplace(name, Entry{std::move(factory),
+                                 std::move(description),
+                                 std::move(facts),
+                                 std::move(options),
+                                 {},
+                                 {}});
+    return *this;
+  }
+
+  /// Gives the entry `name` option values of its own: `defaults` for options the user did not
+  /// set, and `needs`, values the component requires (also applied when not set; a different
+  /// value given is an error of the caller's option check). Throws if the name is unknown.
+  Registry& setOptionValues(const std::string& name, OptionValues defaults,
+                            OptionValues needs = {}) {
+    Entry& entry = entries_.at(canonical(name));
+    entry.defaults = std::move(defaults);
+    entry.needs = std::move(needs);
     return *this;
   }
 
@@ -155,6 +176,13 @@ class Registry {
     }
     return out;
   }
+  /// The option defaults and required values of `name` (setOptionValues). Throw if unknown.
+  const OptionValues& defaults(const std::string& name) const {
+    return entries_.at(canonical(name)).defaults;
+  }
+  const OptionValues& needs(const std::string& name) const {
+    return entries_.at(canonical(name)).needs;
+  }
   /// Every component-specific option some entry reads, sorted and without repeats.
   std::vector<std::string> specificOptions() const {
     std::vector<std::string> out;
@@ -172,6 +200,8 @@ class Registry {
     std::string description;
     std::vector<std::string> facts;
     std::vector<std::string> options;
+    OptionValues defaults;
+    OptionValues needs;
   };
 
   std::string unknownMessage(const std::string& name) const {

@@ -57,6 +57,13 @@ struct Explorer {
 /// The fact of the explorers that add no bonus and only change how actions are chosen
 /// (greedy, epsilongreedy, random, boltzmann): every model serves them.
 inline constexpr const char* kSelectionOnlyFact = "selection-only";
+/// The explorers a model-free agent accepts (greedy, epsilongreedy): it acts epsilon-greedily
+/// either way.
+inline constexpr const char* kModelFreeSelectionFact = "model-free-selection";
+/// The explorer an agent's preset may name that means plain greedy when its weights --v and
+/// --n are both 0 and --explore was not given (texplore is TEXPLORE-VANIR only with v or n, as
+/// the original).
+inline constexpr const char* kGreedyWithoutWeightsFact = "greedy-without-weights";
 
 using ExplorerRegistry = rl_common::Registry<Explorer, const ExplorerSettings&>;
 
