@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "rl_agent/agent/agent_registry.h"
@@ -188,25 +189,23 @@ void applyUnset(const rl_common::OptionParser& p, const rl_common::OptionValues&
   }
 }
 
-/// The value of `option` in `o` as the option parser shows it.
-std::string shownValue(const AgentOptions& o, const std::string& option) {
+/// The value of `option` in `o` as the option parser shows it, and the value it shows after
+/// `value` is applied (equal when `o` already holds `value`, whatever its spelling).
+std::pair<std::string, std::string> shownBeforeAndAfter(const AgentOptions& o,
+                                                        const std::string& option,
+                                                        const std::string& value) {
   AgentOptions copy = o;
   rl_common::OptionParser fields("agent", "");
   addAgentOptions(fields, &copy);
-  for (const auto& [name, value] : fields.currentValues()) {
-    if (name == option) return value;
-  }
-  throw std::invalid_argument("shownValue(): no option --" + option);
-}
-
-/// Same, after applying `value` to it.
-std::string shownValueOf(const AgentOptions& o, const std::string& option,
-                         const std::string& value) {
-  AgentOptions copy = o;
-  rl_common::OptionParser fields("agent", "");
-  addAgentOptions(fields, &copy);
+  const auto shown = [&fields, &option] {
+    for (const auto& [name, current] : fields.currentValues()) {
+      if (name == option) return current;
+    }
+    throw std::invalid_argument("shownBeforeAndAfter(): no option --" + option);
+  };
+  const std::string before = shown();
   fields.set(option, value);
-  return shownValue(copy, option);
+  return {before, shown()};
 }
 
 }  // namespace
@@ -283,9 +282,10 @@ void checkAgentOptions(const rl_common::OptionParser& p, const AgentOptions& o) 
   // Values the agent's entry needs (rmax: --model tabular, --explore unknown).
   if (agentRegistry().contains(o.agent)) {
     for (const auto& [option, value] : agentRegistry().needs(o.agent)) {
-      if (shownValue(o, option) != shownValueOf(o, option, value)) {
+      const auto [given, needed] = shownBeforeAndAfter(o, option, value);
+      if (given != needed) {
         throw rl_common::OptionError("--agent " + o.agent + " needs --" + option + " " + value +
-                                     " (got " + shownValue(o, option) + ")");
+                                     " (got " + given + ")");
       }
     }
   }
