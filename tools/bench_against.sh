@@ -19,15 +19,11 @@ ARGS=("$@")
 [ ${#ARGS[@]} -gt 0 ] || ARGS=(--steps 1000 --rollouts 100)
 export PATH=/usr/sbin:/usr/bin:/sbin:/bin:$PATH
 
-SHA=$(git -C "$ROOT" rev-parse --short "$REV")
-BASE=$ROOT/.build/bench-$SHA
-if [ ! -x "$BASE/devel/lib/rl_experiment/rl_experiment_agent_benchmark" ]; then
-  [ -d "$BASE/src" ] || git -C "$ROOT" worktree add --detach "$BASE/src" "$SHA" >&2
-  cmake -S "$BASE/src" -B "$BASE/build" -DCATKIN_DEVEL_PREFIX="$BASE/devel" \
-    -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCATKIN_ENABLE_TESTING=OFF >"$BASE/configure.log" 2>&1 || { cat "$BASE/configure.log"; exit 1; }
-  cmake --build "$BASE/build" --target rl_experiment_agent_benchmark -- -j"$(nproc)" >&2
-fi
+# shellcheck source=tools/old_build.sh
+source "$ROOT/tools/old_build.sh"
+old_build "$REV" rl_experiment_agent_benchmark
+SHA=$OLD_SHA
+BASE=${OLD_DEVEL%/devel}
 "$ROOT/rl" build >/dev/null
 OLD=$BASE/devel/lib/rl_experiment/rl_experiment_agent_benchmark
 NEW=$ROOT/.build/devel/lib/rl_experiment/rl_experiment_agent_benchmark

@@ -27,16 +27,11 @@ if [ -d "$OLDARG" ]; then
   OLDLIB=$(cd "$OLDARG" && pwd)
   LABEL=$(basename "$(dirname "$OLDLIB")")
 else
-  SHA=$(git -C "$ROOT" rev-parse --short "$OLDARG")
-  BASE=$ROOT/.build/bench-$SHA
-  if [ ! -x "$BASE/devel/lib/rl_experiment/experiment" ]; then
-    [ -d "$BASE/src" ] || git -C "$ROOT" worktree add --detach "$BASE/src" "$SHA" >&2
-    cmake -S "$BASE/src" -B "$BASE/build" -DCATKIN_DEVEL_PREFIX="$BASE/devel" \
-      -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DCATKIN_ENABLE_TESTING=OFF >"$BASE/configure.log" 2>&1 || { cat "$BASE/configure.log"; exit 1; }
-    cmake --build "$BASE/build" --target experiment -- -j"$(nproc)" >&2
-  fi
-  OLDLIB=$BASE/devel/lib
+  # shellcheck source=tools/old_build.sh
+  source "$ROOT/tools/old_build.sh"
+  old_build "$OLDARG" experiment
+  OLDLIB=$OLD_DEVEL/lib
+  SHA=$OLD_SHA
   LABEL=$SHA
 fi
 "$ROOT/rl" build >/dev/null
