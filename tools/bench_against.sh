@@ -23,9 +23,8 @@ export PATH=/usr/sbin:/usr/bin:/sbin:/bin:$PATH
 source "$ROOT/tools/old_build.sh"
 old_build "$REV" rl_experiment_agent_benchmark
 SHA=$OLD_SHA
-BASE=${OLD_DEVEL%/devel}
 "$ROOT/rl" build >/dev/null
-OLD=$BASE/devel/lib/rl_experiment/rl_experiment_agent_benchmark
+OLD=$OLD_DEVEL/lib/rl_experiment/rl_experiment_agent_benchmark
 NEW=$ROOT/.build/devel/lib/rl_experiment/rl_experiment_agent_benchmark
 
 rate() { "$1" fixed "${ARGS[@]}" | awk 'NF == 6 && $1 ~ /^[0-9]+$/ { r = $4 } END { print r }'; }

@@ -31,8 +31,7 @@ else
   source "$ROOT/tools/old_build.sh"
   old_build "$OLDARG" experiment
   OLDLIB=$OLD_DEVEL/lib
-  SHA=$OLD_SHA
-  LABEL=$SHA
+  LABEL=$OLD_SHA
 fi
 "$ROOT/rl" build >/dev/null
 NEWLIB=$ROOT/.build/devel/lib
