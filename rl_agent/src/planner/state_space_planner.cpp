@@ -223,10 +223,6 @@ double StateSpacePlanner::backup(int s, int a) const {
   return backupWith(s, a, [this](int j) { return maxQ(j); });
 }
 
-double StateSpacePlanner::backup(int s, int a, const std::vector<double>& values) const {
-  return backupWith(s, a, [&values](int j) { return values[static_cast<std::size_t>(j)]; });
-}
-
 bool StateSpacePlanner::allows(const rl_common::PlanningBudget& budget, long done) const {
   if (done >= config_.maxIterations) return false;
   if (rl_common::stopRequested()) return false;  // SIGINT: end the step now

@@ -124,9 +124,6 @@ class StateSpacePlanner : public rl_common::Planner {
 
   /// R + γ(1−T) Σ P max Q' for (s, a).
   double backup(int s, int a) const;
-  /// The same with max_a' Q(s', a') read from `values` (one per table state) instead of
-  /// recomputed for every successor: value iteration keeps them current as it sweeps.
-  double backup(int s, int a, const std::vector<double>& values) const;
   double maxQ(int s) const;
   /// R + γ(1−T) Σ P value(s') for (s, a), with value(j) the value of table state j.
   template <class Value>
